@@ -1,0 +1,61 @@
+// scene.h — the scene as loaded, before any device layout: world-space
+// triangles with their shading normals and materials, and the camera if the
+// file has one. Loaders produce it (gltf_loader.h); device_scene.h turns it
+// into the buffers the kernels read.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace wf {
+
+struct SceneMaterial {
+    std::string name;
+    glm::vec3 albedo{0.8f};   // Lambertian reflectance in [0, 1]
+    glm::vec3 emission{0.0f}; // radiance Le (W sr^-1 m^-2), emitted by the front face
+    bool double_sided = false; // emits from both faces
+};
+
+struct SceneCamera {
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f}; // unit
+    glm::vec3 up{0.0f, 1.0f, 0.0f};       // unit, orthogonal to forward
+    float vertical_fov = 0.6911f;         // radians
+    float aspect = 0.0f;                  // width / height; 0 when the file leaves it open
+};
+
+struct Bounds {
+    glm::vec3 lo{std::numeric_limits<float>::infinity()};
+    glm::vec3 hi{-std::numeric_limits<float>::infinity()};
+    void grow(const glm::vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void grow(const Bounds& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    bool empty() const { return !(lo.x <= hi.x); }
+    glm::vec3 center() const { return 0.5f * (lo + hi); }
+    glm::vec3 extent() const { return hi - lo; }
+};
+
+struct Scene {
+    // Three entries per triangle, counter-clockwise seen from the front face.
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals; // shading normals, per corner; never empty beside positions
+    std::vector<uint32_t> triangle_material; // one per triangle, index into materials
+    std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
+    std::vector<SceneMaterial> materials;
+    std::vector<std::string> mesh_names;
+    std::optional<SceneCamera> camera;
+    std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
+
+    size_t triangle_count() const { return triangle_material.size(); }
+    Bounds bounds() const {
+        Bounds b;
+        for (const glm::vec3& p : positions) b.grow(p);
+        return b;
+    }
+};
+
+} // namespace wf

@@ -1,0 +1,24 @@
+/* layout_fields.h — the list of shared structs and members whose size and
+ * offset the host compares with the device compiler's at start-up
+ * (host/layout_check.cpp, kernels/layout_probe.cl). A struct added to
+ * scene_types.h or path_state.h is added here too. */
+#ifndef WAVEFRONT_LAYOUT_FIELDS_H
+#define WAVEFRONT_LAYOUT_FIELDS_H
+
+#define WF_LAYOUT_STRUCTS(X) \
+    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams)
+
+#define WF_LAYOUT_MEMBERS(X)                                                                     \
+    X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
+    X(Triangle, v0) X(Triangle, material) X(Triangle, v1) X(Triangle, light) X(Triangle, v2)      \
+    X(Triangle, mesh)                                                                             \
+    X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
+    X(Material, albedo) X(Material, flags) X(Material, emission)                                  \
+    X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, triangle) X(LightEntry, pmf)    \
+    X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \
+    X(Camera, width) X(Camera, forward) X(Camera, height)                                         \
+    X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
+    X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
+    X(RenderParams, light_count)
+
+#endif /* WAVEFRONT_LAYOUT_FIELDS_H */

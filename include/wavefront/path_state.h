@@ -1,0 +1,65 @@
+/* path_state.h — what the stages pass to each other: the per-render constants,
+ * the queues, the statistics counters, and the path state of every slot.
+ *
+ * The path state is a structure of arrays declared once, by WF_PATH_STATE: the
+ * host allocates one buffer per field (host/path_pool.cpp) and every stage
+ * kernel takes them as one parameter list (kernels/path_state.cl) in this
+ * order, so host and device cannot disagree on what a slot holds. */
+#ifndef WAVEFRONT_PATH_STATE_H
+#define WAVEFRONT_PATH_STATE_H
+
+#include "wavefront/compat.h"
+
+/* Constants of one render, passed by value to every stage kernel. */
+typedef struct RenderParams {
+    uint32_t pixel_count;
+    uint32_t pool_size;      /* path slots; slot i owns pixels i, i + pool, ... */
+    uint32_t spp;            /* samples per pixel to reach */
+    uint32_t max_depth;      /* bounces; 0xffffffff = ended by roulette alone */
+    uint32_t seed;
+    uint32_t roulette_depth; /* first depth at which roulette may end a path */
+    uint32_t light_count;    /* entries in the light table */
+    uint32_t pad;
+} RenderParams;
+
+#define WF_UNLIMITED_DEPTH 0xffffffffu
+
+/* The queues: index buffers of path slots, one region of pool_size entries per
+ * queue in one buffer, each with a counter in the counter buffer. Shade drains
+ * EXTEND whole before roulette refills it, so one extension queue serves. The
+ * numbering lets the host clear the counters of each phase with one fill:
+ * [EXTEND, REGENERATE] once shade has consumed them, the rest at the end of
+ * every iteration, after it has read them. */
+#define WF_QUEUE_EXTEND 0     /* paths whose ray needs a closest hit, then shading */
+#define WF_QUEUE_REGENERATE 1 /* free slots, to receive the next camera sample */
+#define WF_QUEUE_SHADOW 2     /* paths with a pending shadow ray */
+#define WF_QUEUE_CONTINUE 3   /* shaded paths with a new ray, before roulette */
+#define WF_QUEUE_FINISHED 4   /* ended paths, to accumulate */
+#define WF_QUEUE_COUNT 5
+
+/* Statistics the kernels count, after the queue lengths in the same buffer so
+ * one read returns both. */
+#define WF_COUNTER_CLOSEST_RAYS 5
+#define WF_COUNTER_SHADOW_RAYS 6
+#define WF_COUNTER_NONFINITE 7 /* samples dropped for a NaN or Inf component */
+#define WF_COUNTER_COUNT 8
+
+/* The path state: a structure of arrays, one array per field, each indexed by
+ * path slot. Declared once here; the host allocates a buffer per field and the
+ * kernels receive them as one parameter list, in this order.
+ *   X(type, name, what-it-holds) */
+#define WF_PATH_STATE(X)                                                             \
+    X(float4, ray_origin, "xyz: origin of the ray to trace")                         \
+    X(float4, ray_direction, "xyz: direction (unit); w: solid-angle pdf it was sampled with") \
+    X(float4, hit, "closest hit: t, barycentric u, v; w: triangle as bits (-1 = miss)") \
+    X(float4, throughput, "rgb: path throughput")                                    \
+    X(float4, radiance, "rgb: radiance gathered so far")                             \
+    X(float4, shadow_origin, "xyz: shadow ray origin")                               \
+    X(float4, shadow_segment, "xyz: vector to the light point; visible when no hit in (0, 1)") \
+    X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded") \
+    X(uint, pixel, "pixel index of the current sample")                             \
+    X(uint, sample, "sample index within the pixel")                                \
+    X(uint, depth, "bounces so far: 0 for a camera ray")                            \
+    X(uint, work_done, "samples this slot has started: its position in its pixel sequence")
+
+#endif /* WAVEFRONT_PATH_STATE_H */

@@ -1,0 +1,72 @@
+/* scene_types.h — the scene as the device sees it: every struct in a buffer that
+ * both the host writes and the kernels read.
+ *
+ * Layout rules (so OpenCL C and C++ agree without packing pragmas): only 4-byte
+ * scalars and arrays of them, every struct a multiple of 16 bytes. The host
+ * checks sizeof and offsetof of each against the device compiler at start-up
+ * (host/layout_check.cpp), so a change here cannot silently drift. */
+#ifndef WAVEFRONT_SCENE_TYPES_H
+#define WAVEFRONT_SCENE_TYPES_H
+
+#include "wavefront/compat.h"
+
+/* Binary BVH node. Interior (count == 0): children at first and first + 1.
+ * Leaf (count > 0): triangles [first, first + count) in BVH order. */
+typedef struct BvhNode {
+    float lo[3];
+    uint32_t first;
+    float hi[3];
+    uint32_t count;
+} BvhNode;
+
+/* A triangle's corners in world space, in BVH order. The fourth word of each
+ * row carries what closest-hit shading needs next. */
+typedef struct Triangle {
+    float v0[3];
+    uint32_t material;
+    float v1[3];
+    int32_t light; /* index into the light table, or -1 when not emissive */
+    float v2[3];
+    uint32_t mesh; /* index of the glTF mesh it came from, for messages */
+} Triangle;
+
+/* Per-corner shading normals (the geometric normal where the file has none). */
+typedef struct TriangleNormals {
+    float n0[3];
+    float pad0;
+    float n1[3];
+    float pad1;
+    float n2[3];
+    float pad2;
+} TriangleNormals;
+
+#define WF_MATERIAL_DOUBLE_SIDED 1u
+
+typedef struct Material {
+    float albedo[3];   /* Lambertian reflectance */
+    uint32_t flags;    /* WF_MATERIAL_* */
+    float emission[3]; /* radiance Le, W sr^-1 m^-2, from the front face */
+    float pad;
+} Material;
+
+/* One entry of the alias table over emissive triangles, chosen by power. */
+typedef struct LightEntry {
+    float probability; /* keep this entry with this probability, else take alias */
+    uint32_t alias;
+    uint32_t triangle; /* index into the Triangle buffer */
+    float pmf;         /* probability that this entry's triangle is chosen */
+} LightEntry;
+
+/* A pinhole camera; pixel (0,0) is the top-left corner of the image. */
+typedef struct Camera {
+    float origin[3];
+    float tan_half_fov_y;
+    float right[3]; /* unit vectors */
+    float aspect;   /* width / height */
+    float up[3];
+    uint32_t width;
+    float forward[3];
+    uint32_t height;
+} Camera;
+
+#endif /* WAVEFRONT_SCENE_TYPES_H */
