@@ -1,0 +1,38 @@
+/* rng.h — counter-based random numbers.
+ *
+ * Every random number is a pure function of (seed, pixel, sample, bounce,
+ * dimension group), hashed with pcg4d (Jarzynski and Olano, "Hash Functions for
+ * GPU Rendering", JCGT 2020). No generator state travels with a path, so the
+ * image does not depend on the pool size, the local size or the order in which
+ * paths are processed. Each group yields four numbers in [0, 1). */
+#ifndef WF_RNG_H
+#define WF_RNG_H
+
+/* Dimension groups used at each bounce; fixed, whatever the scene's features,
+ * so that variants of the kernels draw the same numbers for the same path. */
+#define WF_RNG_CAMERA 0 /* x: pixel jitter x, y: pixel jitter y */
+#define WF_RNG_LIGHT 1  /* x: light choice, y, z: point on the light */
+#define WF_RNG_BSDF 2   /* x, y: direction; z: roulette */
+#define WF_RNG_GROUPS 3
+
+inline uint4 pcg4d(uint4 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    v ^= v >> 16u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    return v;
+}
+
+/* 24 random bits scaled into [0, 1): exactly representable, never 1. */
+inline float4 rng_uniform4(uint seed, uint pixel, uint sample, uint bounce, uint group) {
+    const uint4 bits = pcg4d((uint4)(pixel, sample, bounce * WF_RNG_GROUPS + group, seed));
+    return convert_float4(bits >> 8u) * (1.0f / 16777216.0f);
+}
+
+#endif

@@ -1,0 +1,33 @@
+/* path_state.h — the kernels' view of the path state declared in
+ * include/wavefront/path_state.h.
+ *
+ * Every stage kernel starts its parameter list with WF_STAGE_PARAMS: one
+ * __global pointer per path-state field (in declaration order), then the render
+ * constants, the queues and the counters. The host sets the same arguments in
+ * the same order (host/path_pool.cpp). WF_BIND_PATH_STATE gathers the field
+ * pointers into one PathState so stage functions take a single argument. */
+#ifndef WF_KERNEL_PATH_STATE_H
+#define WF_KERNEL_PATH_STATE_H
+
+#include "wavefront/path_state.h"
+
+#define WF_PATH_MEMBER(type, name, what) __global type* name;
+/* Parameters are prefixed so that a stage's locals (hit, pixel, ...) never
+ * shadow them. */
+#define WF_PATH_PARAM(type, name, what) __global type* path_##name,
+#define WF_PATH_NAME(type, name, what) path_##name,
+
+typedef struct PathState {
+    WF_PATH_STATE(WF_PATH_MEMBER)
+} PathState;
+
+#define WF_STAGE_PARAMS                                                                      \
+    WF_PATH_STATE(WF_PATH_PARAM)                                                            \
+    const RenderParams params, __global uint *queues, volatile __global uint *counters
+
+#define WF_BIND_PATH_STATE(var) PathState var = {WF_PATH_STATE(WF_PATH_NAME)}
+
+/* The slot at position `index` of queue `queue`. */
+#define WF_QUEUE_AT(queue, index) queues[(queue) * params.pool_size + (index)]
+
+#endif

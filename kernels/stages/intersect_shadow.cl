@@ -1,0 +1,20 @@
+/* intersect_shadow — any hit along each pending shadow segment; an unoccluded
+ * one delivers its light sample's radiance to the path. */
+#include "path_state.h"
+#include "geometry/bvh_traverse.h"
+#include "common/queue_push.h"
+
+__kernel void intersect_shadow(WF_STAGE_PARAMS, __global const BvhNode* nodes,
+                               __global const Triangle* triangles) {
+    WF_BIND_PATH_STATE(path);
+    __local uint scratch[2];
+    const uint index = get_global_id(0);
+    const bool active = index < counters[WF_QUEUE_SHADOW];
+    if (active) {
+        const uint slot = WF_QUEUE_AT(WF_QUEUE_SHADOW, index);
+        const bool occluded = bvh_any_hit(nodes, triangles, path.shadow_origin[slot].xyz,
+                                          path.shadow_segment[slot].xyz, 1.0f);
+        if (!occluded) path.radiance[slot] += path.shadow_radiance[slot];
+    }
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], active ? 1u : 0u, scratch);
+}

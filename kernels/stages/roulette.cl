@@ -1,0 +1,35 @@
+/* roulette — ends paths whose throughput has become small, without bias.
+ *
+ * From params.roulette_depth bounces on, a path survives with probability
+ * q = min(1, max component of its throughput) and its throughput is divided by
+ * q; survivors return to the extension queue, the rest are finished. */
+#include "path_state.h"
+#include "common/rng.h"
+#include "common/queue_push.h"
+
+inline bool survives_roulette(PathState* path, const RenderParams* params, uint slot) {
+    const uint depth = path->depth[slot];
+    if (depth < params->roulette_depth) return true;
+    const float3 throughput = path->throughput[slot].xyz;
+    const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
+    /* The third number of the BSDF group of the bounce that chose this ray. */
+    const float u = rng_uniform4(params->seed, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).z;
+    if (!(u < q)) return false;
+    path->throughput[slot].xyz = throughput / q;
+    return true;
+}
+
+__kernel void roulette(WF_STAGE_PARAMS) {
+    WF_BIND_PATH_STATE(path);
+    __local uint scratch[2];
+    const uint index = get_global_id(0);
+    const bool active = index < counters[WF_QUEUE_CONTINUE];
+    uint slot = 0u;
+    bool survives = false;
+    if (active) {
+        slot = WF_QUEUE_AT(WF_QUEUE_CONTINUE, index);
+        survives = survives_roulette(&path, &params, slot);
+    }
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, survives, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !survives, scratch);
+}

@@ -1,0 +1,135 @@
+/* shade — what happens where a ray landed.
+ *
+ * For each path in the extension queue: a miss ends the path (no environment
+ * yet); a hit on an emitter adds its radiance, weighted by MIS against the
+ * light sampling done at the previous bounce; then, unless the path has reached
+ * --max-depth, one light sample is prepared for intersect_shadow and the
+ * Lambertian BRDF chooses the continuation ray, which roulette may end. */
+#include "path_state.h"
+#include "common/rng.h"
+#include "common/finite.h"
+#include "common/ray_offset.h"
+#include "common/queue_push.h"
+#include "bsdf/lambert.h"
+#include "lights/emissive_triangles.h"
+
+#define WF_SHADE_FINISHED 0u
+#define WF_SHADE_CONTINUES 1u
+#define WF_SHADE_SHADOW_RAY 2u
+
+typedef struct SurfaceHit {
+    float3 position;
+    float3 geometric_normal; /* unit, on the side the ray arrived from */
+    float3 shading_normal;   /* unit, on the same side as geometric_normal */
+    bool front_face;         /* the ray arrived on the counter-clockwise side */
+    float area;
+} SurfaceHit;
+
+inline SurfaceHit surface_at(__global const Triangle* t, __global const TriangleNormals* n,
+                             float4 hit, float3 direction) {
+    SurfaceHit s;
+    const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
+    const float b0 = 1.0f - hit.y - hit.z;
+    /* From the corners, not origin + t·direction: exact to the triangle's own rounding. */
+    s.position = b0 * v0 + hit.y * v1 + hit.z * v2;
+    const float3 cross_edges = cross(v1 - v0, v2 - v0);
+    s.area = 0.5f * length(cross_edges);
+    const float3 ng = cross_edges / (2.0f * s.area);
+    s.front_face = dot(ng, direction) < 0.0f;
+    s.geometric_normal = s.front_face ? ng : -ng;
+    const float3 ns = normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2));
+    s.shading_normal = dot(ns, s.geometric_normal) < 0.0f ? -ns : ns;
+    return s;
+}
+
+inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
+                       __global const Triangle* triangles, __global const TriangleNormals* normals,
+                       __global const Material* materials, __global const LightEntry* lights) {
+    const float4 hit = path->hit[slot];
+    const int triangle = as_int(hit.w);
+    if (triangle < 0) return WF_SHADE_FINISHED;
+
+    const float4 ray = path->ray_direction[slot];
+    const float3 direction = ray.xyz;
+    const float pdf_previous = ray.w; /* 0 for camera rays: nothing to weigh against */
+    const uint depth = path->depth[slot];
+    const uint pixel = path->pixel[slot];
+    const uint sample = path->sample[slot];
+    const __global Triangle* t = &triangles[triangle];
+    const __global Material* m = &materials[t->material];
+    const SurfaceHit s = surface_at(t, &normals[triangle], hit, direction);
+    float3 throughput = path->throughput[slot].xyz;
+
+    /* Emission seen along the ray. */
+    if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
+        float weight = 1.0f;
+        if (pdf_previous > 0.0f && params->light_count > 0u) {
+            const float cos_light = -dot(s.geometric_normal, direction);
+            const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
+            weight = power_heuristic(pdf_previous, pdf_light);
+        }
+        path->radiance[slot].xyz += weight * throughput * vload3(0, m->emission);
+    }
+    if (depth >= params->max_depth) return WF_SHADE_FINISHED;
+
+    const float3 albedo = vload3(0, m->albedo);
+    const float3 f = lambert_eval(albedo);
+    const float3 origin = offset_ray_origin(s.position, s.geometric_normal);
+    uint outcome = WF_SHADE_FINISHED;
+
+    /* Next-event estimation: one point on one emitter, weighted against the BRDF. */
+    if (params->light_count > 0u) {
+        const float4 u = rng_uniform4(params->seed, pixel, sample, depth, WF_RNG_LIGHT);
+        const LightSample ls = sample_light(lights, params->light_count, triangles, materials, s.position, u);
+        const float3 to_light = ls.point - s.position;
+        const float3 wi = normalize(to_light);
+        const float cos_surface = dot(s.shading_normal, wi);
+        if (ls.pdf > 0.0f && cos_surface > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
+            const float weight = power_heuristic(ls.pdf, lambert_pdf(s.shading_normal, wi));
+            const float3 contribution = throughput * f * ls.radiance * (cos_surface * weight / ls.pdf);
+            if (is_finite3(contribution)) {
+                const float3 target = offset_ray_origin(ls.point, ls.normal);
+                path->shadow_origin[slot] = (float4)(origin, 0.0f);
+                path->shadow_segment[slot] = (float4)(target - origin, 0.0f);
+                path->shadow_radiance[slot] = (float4)(contribution, 0.0f);
+                outcome |= WF_SHADE_SHADOW_RAY;
+            }
+        }
+    }
+
+    /* The continuation, by cosine-weighted BRDF sampling; f · cos / pdf = albedo. */
+    const float4 u = rng_uniform4(params->seed, pixel, sample, depth, WF_RNG_BSDF);
+    const float3 wi = lambert_sample(s.shading_normal, u.xy);
+    const float pdf = lambert_pdf(s.shading_normal, wi);
+    /* A direction below the geometric surface would leak through it. */
+    if (pdf > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
+        path->throughput[slot].xyz = throughput * albedo;
+        path->ray_origin[slot] = (float4)(origin, 0.0f);
+        path->ray_direction[slot] = (float4)(wi, pdf);
+        path->depth[slot] = depth + 1u;
+        outcome |= WF_SHADE_CONTINUES;
+    }
+    return outcome;
+}
+
+__kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
+                    __global const TriangleNormals* normals, __global const Material* materials,
+                    __global const LightEntry* lights) {
+    WF_BIND_PATH_STATE(path);
+    __local uint scratch[2];
+    const uint index = get_global_id(0);
+    const bool active = index < counters[WF_QUEUE_EXTEND];
+    uint slot = 0u;
+    uint outcome = WF_SHADE_FINISHED;
+    if (active) {
+        slot = WF_QUEUE_AT(WF_QUEUE_EXTEND, index);
+        outcome = shade_path(&path, &params, slot, triangles, normals, materials, lights);
+    }
+    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot,
+               (outcome & WF_SHADE_SHADOW_RAY) != 0u, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot,
+               (outcome & WF_SHADE_CONTINUES) != 0u, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot,
+               active && !(outcome & WF_SHADE_CONTINUES), scratch);
+}
