@@ -1,0 +1,100 @@
+// cli.cpp — flags are declared with OpenImageIO's ArgParse (a dependency
+// already), stored as text, then converted with range checks of our own so that
+// "--spp abc" or "--spp 0" is an error rather than a silent zero.
+#include "cli.h"
+
+#include <charconv>
+
+#include <OpenImageIO/argparse.h>
+
+#include "errors.h"
+
+namespace wf {
+namespace {
+
+uint32_t parse_count(const std::string& flag, const std::string& text, uint64_t lo, uint64_t hi) {
+    uint64_t value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (text.empty() || ec != std::errc() || ptr != end)
+        throw InputError(flag + " " + text + ": expected a whole number");
+    if (value < lo || value > hi)
+        throw InputError(flag + " " + text + ": must be between " + std::to_string(lo) + " and " +
+                         std::to_string(hi));
+    return static_cast<uint32_t>(value);
+}
+
+constexpr uint64_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
+
+std::string render_usage() {
+    return "wavefront render SCENE.gltf|.glb [-o OUT] [flags]\n"
+           "Renders a glTF scene by wavefront path tracing on an OpenCL device and writes the\n"
+           "image (.exr: linear float radiance; .png and other 8-bit formats: sRGB).";
+}
+
+} // namespace
+
+CommandLine parse_command_line(int argc, const char** argv) {
+    CommandLine cl;
+    const std::string first = argc > 1 ? argv[1] : "";
+    if (argc < 2 || first == "--help" || first == "-h" || first == "help") {
+        cl.help = "usage: wavefront render SCENE [flags]   render a glTF scene (see `wavefront render --help`)\n"
+                  "       wavefront devices                list OpenCL platforms and devices\n"
+                  "       wavefront --version";
+        return cl;
+    }
+    if (first == "--version") {
+        cl.command = Command::Version;
+        return cl;
+    }
+    if (first == "devices") {
+        if (argc > 2) throw InputError(std::string("devices: unexpected argument '") + argv[2] + "'");
+        cl.command = Command::Devices;
+        return cl;
+    }
+    if (first != "render") throw InputError("unknown command '" + first + "' (expected render or devices)");
+
+    RenderOptions& o = cl.render;
+    std::vector<std::string> positional;
+    OIIO::ArgParse ap;
+    ap.intro(render_usage()).usage("wavefront render SCENE [flags]").exit_on_error(false);
+    ap.add_help(false);
+    ap.arg("filename").hidden().action([&](OIIO::cspan<const char*> a) { positional.emplace_back(a[0]); });
+    ap.arg("-h").help("Print this help").store_true();
+    ap.arg("--help").hidden().store_true();
+    ap.arg("-o OUT").help("Output image; the extension picks the format (default: render.png)");
+    ap.arg("--spp N").help("Samples per pixel (default: 16)");
+    ap.arg("--width N").help("Image width (default: 512, or from --height and the camera's aspect)");
+    ap.arg("--height N").help("Image height (default: from the width and the camera's aspect)");
+    ap.arg("--max-depth N").help("Bounces per path; 1 is direct lighting only (default: unlimited, ended by roulette)");
+    ap.arg("--seed N").help("Random seed; the same seed and device give the same bytes (default: 0)");
+    ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
+    ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: 262144)");
+    ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
+
+    // ArgParse expects argv[0]; ours is "render".
+    if (ap.parse_args(argc - 1, argv + 1) < 0) throw InputError("render: " + ap.geterror());
+    if (ap["h"].get<int>() || ap["help"].get<int>()) {
+        ap.print_help(); // ArgParse prints to stdout itself
+        return cl;
+    }
+    if (positional.size() != 1)
+        throw InputError(positional.empty() ? "render: no scene file given"
+                                            : "render: more than one scene file given ('" + positional[1] + "')");
+    o.scene = positional[0];
+
+    auto text = [&](const char* name) { return ap[name].get<std::string>(); };
+    if (!text("o").empty()) o.output = text("o");
+    if (!text("spp").empty()) o.settings.spp = parse_count("--spp", text("spp"), 1, 1u << 24);
+    if (!text("width").empty()) o.width = parse_count("--width", text("width"), 1, kMaxSide);
+    if (!text("height").empty()) o.height = parse_count("--height", text("height"), 1, kMaxSide);
+    if (!text("max-depth").empty()) o.settings.max_depth = parse_count("--max-depth", text("max-depth"), 0, 1u << 20);
+    if (!text("seed").empty()) o.settings.seed = parse_count("--seed", text("seed"), 0, UINT32_MAX);
+    if (!text("pool-size").empty()) o.settings.pool_size = parse_count("--pool-size", text("pool-size"), 1, 1u << 26);
+    if (!text("camera").empty()) o.camera = static_cast<int>(parse_count("--camera", text("camera"), 0, 1u << 20));
+    o.device = text("device");
+    cl.command = Command::Render;
+    return cl;
+}
+
+} // namespace wf

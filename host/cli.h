@@ -1,0 +1,33 @@
+// cli.h — the command line: `wavefront render SCENE [flags]`, `wavefront
+// devices`, `--help`, `--version`. Every flag value is checked here; a bad one
+// is an InputError that names the flag and the value.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "wavefront_scheduler.h"
+
+namespace wf {
+
+struct RenderOptions {
+    std::string scene;
+    std::string output = "render.png";
+    uint32_t width = 0;  // 0: from the camera's aspect
+    uint32_t height = 0;
+    int camera = -1;     // -1: the file's first perspective camera
+    std::string device;  // empty: the first GPU, else the first device
+    RenderSettings settings;
+};
+
+enum class Command { Render, Devices, Help, Version };
+
+struct CommandLine {
+    Command command = Command::Help;
+    RenderOptions render;
+    std::string help; // the text to print for Command::Help
+};
+
+CommandLine parse_command_line(int argc, const char** argv);
+
+} // namespace wf

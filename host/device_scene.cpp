@@ -1,0 +1,107 @@
+// device_scene.cpp — reorders the loaded triangles into BVH order and builds
+// the light table: each emissive triangle is weighted by its power,
+// π · area · mean(Le), doubled when it emits from both faces.
+#include "device_scene.h"
+
+#include <algorithm>
+
+#include "alias_table.h"
+
+namespace wf {
+namespace {
+
+void store3(float* out, const glm::vec3& v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+double triangle_power(const Scene& scene, uint32_t t) {
+    const SceneMaterial& m = scene.materials[scene.triangle_material[t]];
+    const glm::dvec3 a(scene.positions[3 * t]), b(scene.positions[3 * t + 1]), c(scene.positions[3 * t + 2]);
+    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+    const double radiance = (double(m.emission.x) + m.emission.y + m.emission.z) / 3.0;
+    return 3.14159265358979323846 * area * radiance * (m.double_sided ? 2.0 : 1.0);
+}
+
+template <class T> cl::Buffer upload(const cl::Context& context, const std::vector<T>& data, size_t& bytes) {
+    // OpenCL has no empty buffers; an unused one holds a single zeroed element.
+    std::vector<T> storage = data.empty() ? std::vector<T>(1, T{}) : data;
+    bytes += storage.size() * sizeof(T);
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, storage.size() * sizeof(T),
+                      storage.data());
+}
+
+} // namespace
+
+DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
+    DeviceSceneData d;
+    d.nodes = bvh.nodes;
+    const size_t n = bvh.order.size();
+    d.triangles.resize(n);
+    d.normals.resize(n);
+    std::vector<double> light_weights;
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t t = bvh.order[i];
+        Triangle& tri = d.triangles[i];
+        store3(tri.v0, scene.positions[3 * t]);
+        store3(tri.v1, scene.positions[3 * t + 1]);
+        store3(tri.v2, scene.positions[3 * t + 2]);
+        tri.material = scene.triangle_material[t];
+        tri.mesh = scene.triangle_mesh[t];
+        tri.light = -1;
+        TriangleNormals& nrm = d.normals[i];
+        nrm = TriangleNormals{};
+        store3(nrm.n0, scene.normals[3 * t]);
+        store3(nrm.n1, scene.normals[3 * t + 1]);
+        store3(nrm.n2, scene.normals[3 * t + 2]);
+        const double power = triangle_power(scene, t);
+        if (power > 0.0) {
+            tri.light = static_cast<int32_t>(light_weights.size());
+            d.lights.push_back(LightEntry{0.0f, 0u, static_cast<uint32_t>(i), 0.0f});
+            light_weights.push_back(power);
+            d.emitted_power += power;
+        }
+    }
+    if (!light_weights.empty()) {
+        const std::vector<AliasEntry> table = build_alias_table(light_weights);
+        for (size_t i = 0; i < table.size(); ++i) {
+            d.lights[i].probability = table[i].probability;
+            d.lights[i].alias = table[i].alias;
+            d.lights[i].pmf = table[i].pmf;
+        }
+    }
+    for (const SceneMaterial& m : scene.materials) {
+        Material dm{};
+        store3(dm.albedo, glm::clamp(m.albedo, 0.0f, 1.0f));
+        store3(dm.emission, m.emission);
+        dm.flags = m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
+        d.materials.push_back(dm);
+    }
+    return d;
+}
+
+size_t DeviceSceneData::bytes() const {
+    return nodes.size() * sizeof(BvhNode) + triangles.size() * sizeof(Triangle) +
+           normals.size() * sizeof(TriangleNormals) + materials.size() * sizeof(Material) +
+           lights.size() * sizeof(LightEntry);
+}
+
+size_t DeviceSceneData::largest_buffer_bytes() const {
+    return std::max({nodes.size() * sizeof(BvhNode), triangles.size() * sizeof(Triangle),
+                     normals.size() * sizeof(TriangleNormals), materials.size() * sizeof(Material),
+                     lights.size() * sizeof(LightEntry)});
+}
+
+DeviceScene upload_scene(const cl::Context& context, const DeviceSceneData& data) {
+    DeviceScene s;
+    s.nodes = upload(context, data.nodes, s.bytes);
+    s.triangles = upload(context, data.triangles, s.bytes);
+    s.normals = upload(context, data.normals, s.bytes);
+    s.materials = upload(context, data.materials, s.bytes);
+    s.lights = upload(context, data.lights, s.bytes);
+    s.light_count = static_cast<uint32_t>(data.lights.size());
+    return s;
+}
+
+} // namespace wf

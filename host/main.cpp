@@ -1,0 +1,42 @@
+// main.cpp — `wavefront`: the command dispatch and the exit-code policy.
+//   0 success · 1 the machine failed (no OpenCL device, a kernel that will not
+//   build) · 2 the input is at fault (a scene, a flag, an output path).
+// Every failure is one line on stderr that names the thing at fault.
+#include <iostream>
+
+#include "cli.h"
+#include "errors.h"
+#include "render_command.h"
+
+int main(int argc, const char** argv) {
+    try {
+        const wf::CommandLine cl = wf::parse_command_line(argc, argv);
+        switch (cl.command) {
+        case wf::Command::Help:
+            if (!cl.help.empty()) std::cout << cl.help << "\n";
+            return 0;
+        case wf::Command::Version:
+            std::cout << "wavefront " << WF_VERSION << "\n";
+            return 0;
+        case wf::Command::Devices:
+            wf::print_devices(std::cout);
+            return 0;
+        case wf::Command::Render:
+            wf::print_report(std::cout, wf::run_render(cl.render, std::cerr));
+            return 0;
+        }
+    } catch (const wf::InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
+    } catch (const wf::DeviceError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    } catch (const cl::Error& e) {
+        std::cerr << "error: OpenCL call " << e.what() << " failed with code " << e.err() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 1;
+}

@@ -1,0 +1,48 @@
+// path_pool.h — the device memory of the wavefront: one buffer per path-state
+// field (include/wavefront/path_state.h), the queues, and their counters.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "wavefront/path_state.h"
+
+namespace wf {
+
+// One enumerator per path-state field, in declaration order.
+enum class PathField {
+#define WF_PATH_FIELD_ENUM(type, name, what) name,
+    WF_PATH_STATE(WF_PATH_FIELD_ENUM)
+#undef WF_PATH_FIELD_ENUM
+};
+
+class PathPool {
+public:
+    PathPool(const cl::Context& context, uint32_t pool_size);
+
+    // Sets the arguments every stage kernel begins with (WF_STAGE_PARAMS in
+    // kernels/path_state.h) and returns the index of the first stage-specific one.
+    cl_uint set_stage_args(cl::Kernel& kernel, const RenderParams& params) const;
+
+    // Zeroes every path-state field, before a render starts.
+    void clear(const cl::CommandQueue& queue) const;
+
+    const cl::Buffer& field(PathField f) const { return fields_[static_cast<size_t>(f)]; }
+
+    uint32_t size() const { return size_; }
+    // Device memory per path slot: its state plus one entry in every queue.
+    static size_t bytes_per_path();
+    size_t bytes() const { return bytes_per_path() * size_; }
+
+    cl::Buffer queues;   // WF_QUEUE_COUNT regions of size() slot indices
+    cl::Buffer counters; // WF_COUNTER_COUNT uints: queue lengths, then statistics
+
+private:
+    uint32_t size_;
+    std::vector<cl::Buffer> fields_; // in WF_PATH_STATE order
+    std::vector<size_t> field_bytes_; // bytes per slot of each field
+};
+
+} // namespace wf

@@ -1,0 +1,35 @@
+// render_report.h — the closing report of a render: what it cost, stage by
+// stage, and whether any sample went non-finite.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "wavefront_scheduler.h"
+
+namespace wf {
+
+struct RenderTimes {
+    double load = 0.0;
+    double bvh_build = 0.0;
+    double kernel_build = 0.0;
+};
+
+struct RenderSummary {
+    std::string scene;
+    size_t triangles = 0;
+    size_t materials = 0;
+    size_t emissive_triangles = 0;
+    size_t bvh_nodes = 0;
+    int bvh_depth = 0;
+    std::string device;
+    uint32_t width = 0, height = 0, spp = 0;
+    size_t device_bytes = 0;
+    RenderTimes times;
+    RenderStats stats;
+    std::string output;
+};
+
+void print_report(std::ostream& out, const RenderSummary& s);
+
+} // namespace wf

@@ -1,0 +1,80 @@
+// wavefront_scheduler.h — the host loop that drives the stage kernels over the
+// path pool until every pixel has its samples.
+//
+// One iteration:  generate → intersect → shade → intersect_shadow → roulette →
+// accumulate, each launched over the queue it reads (sized from the counters
+// read at the end of the previous iteration), then one read of the counters.
+// Freed slots are refilled by generate at the start of the next iteration, so
+// the pool stays full until the last samples are started.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "device_scene.h"
+#include "film.h"
+#include "opencl_device.h"
+#include "path_pool.h"
+#include "wavefront/path_state.h"
+#include "wavefront/scene_types.h"
+
+namespace wf {
+
+struct RenderSettings {
+    uint32_t spp = 16;
+    uint32_t max_depth = WF_UNLIMITED_DEPTH;
+    uint32_t seed = 0;
+    uint32_t pool_size = 0; // 0: chosen from the image and the device
+    uint32_t roulette_depth = 3;
+    uint32_t local_size = 64;
+};
+
+enum Stage { STAGE_GENERATE, STAGE_INTERSECT, STAGE_SHADE, STAGE_INTERSECT_SHADOW, STAGE_ROULETTE, STAGE_ACCUMULATE, STAGE_COUNT };
+
+struct StageTime {
+    const char* name = "";
+    double seconds = 0.0; // from OpenCL profiling events
+    uint64_t launches = 0;
+};
+
+struct RenderStats {
+    double seconds = 0.0; // wall time of render()
+    uint64_t samples = 0;
+    uint64_t closest_rays = 0;
+    uint64_t shadow_rays = 0;
+    uint64_t nonfinite_samples = 0;
+    uint64_t iterations = 0;
+    uint32_t pool_size = 0;
+    size_t pool_bytes = 0;
+    std::array<StageTime, STAGE_COUNT> stages{};
+    double kernel_seconds() const;
+};
+
+// The pool size used for a render: the requested one (or a default), never more
+// than the pixel count, since each slot owns whole pixels. `note` says why when
+// it differs from the request.
+uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note);
+
+class WavefrontScheduler {
+public:
+    WavefrontScheduler(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
+                       const Camera& camera, const RenderSettings& settings);
+
+    // Renders all samples into the film and returns what it cost.
+    RenderStats render();
+
+    const Film& film() const { return film_; }
+
+private:
+    cl::Event launch(Stage stage, uint32_t items);
+
+    const OpenClDevice& device_;
+    RenderSettings settings_;
+    RenderParams params_{};
+    PathPool pool_;
+    Film film_;
+    std::array<cl::Kernel, STAGE_COUNT> kernels_;
+};
+
+} // namespace wf
