@@ -1,0 +1,116 @@
+// test_cli.cpp — the `wavefront` executable as a user meets it: exit codes,
+// one-line errors that name the thing at fault, and the files it writes.
+#include <sys/wait.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace wf {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ProcessResult {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("wavefront_cli_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    ProcessResult run(const std::string& args) const {
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        const std::string command =
+            std::string("'") + WF_BINARY + "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
+        const int status = std::system(command.c_str());
+        return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(out), test::read_file(err)};
+    }
+
+    // A bad invocation: exit code 2 and exactly one line on stderr containing `names`.
+    void expect_rejected(const std::string& args, const std::string& names) const {
+        const ProcessResult r = run(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(names), std::string::npos) << args << ": '" << r.err << "' should name '" << names << "'";
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": '" << r.err << "'";
+    }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
+
+    fs::path dir_;
+};
+
+const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
+
+TEST_F(Cli, DevicesListsTheCpu) {
+    const ProcessResult r = run("devices");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("type cpu"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, BadFlagsAreRejectedByName) {
+    expect_rejected("render " + kCornell + " --spp 0", "--spp 0");
+    expect_rejected("render " + kCornell + " --spp abc", "--spp abc");
+    expect_rejected("render " + kCornell + " --width -5", "--width -5");
+    expect_rejected("render " + kCornell + " --width 100000 --height 100000", "--width 100000");
+    expect_rejected("render " + kCornell + " --frobnicate", "frobnicate");
+    expect_rejected("render", "no scene file");
+    expect_rejected("paint " + kCornell, "paint");
+    expect_rejected("render " + kCornell + " --device 99 -o " + path("x.png"), "--device 99");
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+TEST_F(Cli, BadScenesAreRejectedByName) {
+    expect_rejected("render " + path("missing.gltf"), "missing.gltf");
+    write("broken.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ ");
+    expect_rejected("render " + path("broken.gltf"), "broken.gltf");
+    // One triangle whose second corner is NaN: the buffer holds 3 floats per corner.
+    const std::string nan_triangle = "AAAAAAAAAAAAAAAAAADAfwAAAAAAAAAAAAAAAAAAgD8AAAAA"; // base64 of 9 floats
+    write("nan.gltf", std::string(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+      "meshes":[{"name":"spiky","primitives":[{"attributes":{"POSITION":0}}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
+      "bufferViews":[{"buffer":0,"byteLength":36}],
+      "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)") + nan_triangle + R"("}]})");
+    expect_rejected("render " + path("nan.gltf"), "spiky");
+}
+
+TEST_F(Cli, RendersPngAndExrWithMetadata) {
+    const ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
+    ASSERT_EQ(png.exit_code, 0) << png.err;
+    EXPECT_NE(png.out.find("non-finite samples 0"), std::string::npos) << png.out;
+    const ProcessResult exr = run("render " + kCornell + " --width 32 --spp 2 --seed 5 -o " + path("cornell.exr"));
+    ASSERT_EQ(exr.exit_code, 0) << exr.err;
+
+    auto in = OIIO::ImageInput::open(path("cornell.png"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
+    EXPECT_EQ(in->spec().width, 32);
+    in = OIIO::ImageInput::open(path("cornell.exr"));
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
+    EXPECT_EQ(spec.height, 32); // the camera's aspect is 1
+    EXPECT_EQ(spec.get_int_attribute("wavefront:samplesPerPixel"), 2);
+    EXPECT_EQ(spec.get_int_attribute("wavefront:seed"), 5);
+    EXPECT_GT(spec.get_float_attribute("wavefront:renderTimeSeconds"), 0.0f);
+    EXPECT_FALSE(spec.get_string_attribute("wavefront:device").empty());
+}
+
+} // namespace
+} // namespace wf
