@@ -27,7 +27,14 @@ typedef struct PathState {
 
 #define WF_BIND_PATH_STATE(var) PathState var = {WF_PATH_STATE(WF_PATH_NAME)}
 
-/* The slot at position `index` of queue `queue`. */
-#define WF_QUEUE_AT(queue, index) queues[(queue) * params.pool_size + (index)]
+/* Whether this work-item has a path in `queue` (the queue is shorter than
+ * the launch, which is rounded up to whole work-groups), and which slot. */
+inline bool queue_slot(uint pool_size, __global const uint* queues, volatile __global const uint* counters,
+                       uint queue, uint* slot) {
+    const uint index = get_global_id(0);
+    const bool active = index < counters[queue];
+    *slot = active ? queues[queue * pool_size + index] : 0u;
+    return active;
+}
 
 #endif

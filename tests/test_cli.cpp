@@ -73,6 +73,8 @@ TEST_F(Cli, BadFlagsAreRejectedByName) {
     expect_rejected("render", "no scene file");
     expect_rejected("paint " + kCornell, "paint");
     expect_rejected("render " + kCornell + " --device 99 -o " + path("x.png"), "--device 99");
+    // 2^30 pixels need 36 GiB of film: refused, saying so, before any allocation.
+    expect_rejected("render " + kCornell + " --width 32768 --height 32768 -o " + path("x.png"), "device memory");
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 

@@ -22,12 +22,10 @@ __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum,
                          __global float4* film_compensation, __global uint* film_samples) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
-    const uint index = get_global_id(0);
-    const bool active = index < counters[WF_QUEUE_FINISHED];
-    uint slot = 0u;
+    uint slot;
+    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_FINISHED, &slot);
     bool nonfinite = false;
     if (active) {
-        slot = WF_QUEUE_AT(WF_QUEUE_FINISHED, index);
         const uint pixel = path.pixel[slot];
         const float3 radiance = path.radiance[slot].xyz;
         nonfinite = !is_finite3(radiance);

@@ -40,12 +40,8 @@ inline bool start_camera_sample(PathState* path, const RenderParams* params, con
 __kernel void generate(WF_STAGE_PARAMS, const Camera camera) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
-    const uint index = get_global_id(0);
-    uint slot = 0u;
-    bool started = false;
-    if (index < counters[WF_QUEUE_REGENERATE]) {
-        slot = WF_QUEUE_AT(WF_QUEUE_REGENERATE, index);
-        started = start_camera_sample(&path, &params, &camera, slot);
-    }
+    uint slot;
+    const bool started = queue_slot(params.pool_size, queues, counters, WF_QUEUE_REGENERATE, &slot) &&
+                         start_camera_sample(&path, &params, &camera, slot);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, started, scratch);
 }

@@ -5,9 +5,8 @@
 __kernel void intersect(WF_STAGE_PARAMS, __global const BvhNode* nodes,
                         __global const Triangle* triangles) {
     WF_BIND_PATH_STATE(path);
-    const uint index = get_global_id(0);
-    if (index >= counters[WF_QUEUE_EXTEND]) return;
-    const uint slot = WF_QUEUE_AT(WF_QUEUE_EXTEND, index);
+    uint slot;
+    if (!queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot)) return;
     const RayHit hit = bvh_closest_hit(nodes, triangles, path.ray_origin[slot].xyz,
                                        path.ray_direction[slot].xyz, INFINITY);
     path.hit[slot] = (float4)(hit.t, hit.u, hit.v, as_float(hit.triangle));

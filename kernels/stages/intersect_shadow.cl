@@ -8,10 +8,9 @@ __kernel void intersect_shadow(WF_STAGE_PARAMS, __global const BvhNode* nodes,
                                __global const Triangle* triangles) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
-    const uint index = get_global_id(0);
-    const bool active = index < counters[WF_QUEUE_SHADOW];
+    uint slot;
+    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_SHADOW, &slot);
     if (active) {
-        const uint slot = WF_QUEUE_AT(WF_QUEUE_SHADOW, index);
         const bool occluded = bvh_any_hit(nodes, triangles, path.shadow_origin[slot].xyz,
                                           path.shadow_segment[slot].xyz, 1.0f);
         if (!occluded) path.radiance[slot] += path.shadow_radiance[slot];

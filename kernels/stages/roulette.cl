@@ -22,14 +22,9 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
 __kernel void roulette(WF_STAGE_PARAMS) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
-    const uint index = get_global_id(0);
-    const bool active = index < counters[WF_QUEUE_CONTINUE];
-    uint slot = 0u;
-    bool survives = false;
-    if (active) {
-        slot = WF_QUEUE_AT(WF_QUEUE_CONTINUE, index);
-        survives = survives_roulette(&path, &params, slot);
-    }
+    uint slot;
+    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_CONTINUE, &slot);
+    const bool survives = active && survives_roulette(&path, &params, slot);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, survives, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !survives, scratch);
 }

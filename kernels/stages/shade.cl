@@ -117,14 +117,10 @@ __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     __global const LightEntry* lights) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
-    const uint index = get_global_id(0);
-    const bool active = index < counters[WF_QUEUE_EXTEND];
-    uint slot = 0u;
-    uint outcome = WF_SHADE_FINISHED;
-    if (active) {
-        slot = WF_QUEUE_AT(WF_QUEUE_EXTEND, index);
-        outcome = shade_path(&path, &params, slot, triangles, normals, materials, lights);
-    }
+    uint slot;
+    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
+    const uint outcome =
+        active ? shade_path(&path, &params, slot, triangles, normals, materials, lights) : WF_SHADE_FINISHED;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot,
                (outcome & WF_SHADE_SHADOW_RAY) != 0u, scratch);

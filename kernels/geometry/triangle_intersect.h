@@ -1,0 +1,142 @@
+/* triangle_intersect.h — the watertight ray/triangle test of Woop, Benthin and
+ * Wald ("Watertight Ray/Triangle Intersection", JCGT 2013), shared by the
+ * kernels and the host.
+ *
+ * Promises: a ray through an edge or a vertex shared by triangles of a closed
+ * mesh hits at least one of them (no cracks), whatever the rounding. Both faces
+ * count (no culling). A hit has t strictly inside (0, t_max) and barycentrics
+ * u, v with p = (1 - u - v) v0 + u v1 + v v2. A zero-area triangle is hit only
+ * by a ray that passes through it within rounding error.
+ * Precondition: the direction is finite and not zero; it need not be unit.
+ *
+ * How: each ray gets a transform that moves its origin to 0, permutes the axes
+ * so that the direction's largest component becomes z, and shears the
+ * direction onto +z. Every vertex is transformed by the same arithmetic, so
+ * triangles that share an edge see identical 2D endpoints, and their edge
+ * functions for it are exact negatives of each other: the sign tests agree.
+ * An edge function that rounds to exactly 0 is recomputed in double, where the
+ * products of floats are exact, so its sign is the true one.
+ *
+ * OpenCL C cannot index a vector by a runtime value, so the permutation is
+ * applied as dot products with unit basis vectors; multiplying by 1 and 0 is
+ * exact, so this changes nothing about the rounding. The device compiler must
+ * not contract a*b - c*d into a fused multiply-add here (it would break the
+ * exact antisymmetry); the pragma below forbids it. */
+#ifndef WF_TRIANGLE_INTERSECT_H
+#define WF_TRIANGLE_INTERSECT_H
+
+#include "wavefront/compat.h"
+
+/* Edge functions that round to 0 are redone in double wherever double exists. */
+#ifdef __OPENCL_C_VERSION__
+#ifdef cl_khr_fp64
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+#define WF_EDGE_FUNCTION_DOUBLE_FALLBACK 1
+#endif
+#else
+#define WF_EDGE_FUNCTION_DOUBLE_FALLBACK 1
+#endif
+
+WF_DEVICE_BEGIN
+
+/* A ray prepared for many triangle tests: vertex p maps to
+ * (dot(shear_x, p - origin), dot(shear_y, p - origin), dot(scale_z, p - origin)),
+ * which puts the ray on the +z axis with z measured in units of t. */
+typedef struct WatertightRay {
+    float3 origin;
+    float3 shear_x;
+    float3 shear_y;
+    float3 scale_z;
+} WatertightRay;
+
+typedef struct TriangleHit {
+    float t;
+    float u; /* weight of v1 */
+    float v; /* weight of v2 */
+} TriangleHit;
+
+WF_INLINE WatertightRay watertight_ray(float3 origin, float3 direction) {
+    /* Rows of the permutation (x, y, z) -> (kx, ky, kz), kz the dominant axis. */
+    const float3 a = fabs(direction);
+    float3 row_x, row_y, row_z;
+    if (a.x >= a.y && a.x >= a.z) {
+        row_x = make_float3(0.0f, 1.0f, 0.0f);
+        row_y = make_float3(0.0f, 0.0f, 1.0f);
+        row_z = make_float3(1.0f, 0.0f, 0.0f);
+    } else if (a.y >= a.z) {
+        row_x = make_float3(0.0f, 0.0f, 1.0f);
+        row_y = make_float3(1.0f, 0.0f, 0.0f);
+        row_z = make_float3(0.0f, 1.0f, 0.0f);
+    } else {
+        row_x = make_float3(1.0f, 0.0f, 0.0f);
+        row_y = make_float3(0.0f, 1.0f, 0.0f);
+        row_z = make_float3(0.0f, 0.0f, 1.0f);
+    }
+    /* Nonzero, being the largest |component|; |shear| <= 1 and never NaN. */
+    const float dz = dot(row_z, direction);
+    WatertightRay ray;
+    ray.origin = origin;
+    ray.shear_x = row_x - (dot(row_x, direction) / dz) * row_z;
+    ray.shear_y = row_y - (dot(row_y, direction) / dz) * row_z;
+    ray.scale_z = (1.0f / dz) * row_z;
+    return ray;
+}
+
+/* Twice the signed area of the 2D triangle (0, p, q); swapping p and q negates
+ * it exactly. */
+WF_INLINE float edge_function(float px, float py, float qx, float qy) {
+#ifdef __OPENCL_C_VERSION__
+#pragma OPENCL FP_CONTRACT OFF
+#endif
+    return px * qy - py * qx;
+}
+
+#ifdef WF_EDGE_FUNCTION_DOUBLE_FALLBACK
+WF_INLINE float edge_function_exact_sign(float px, float py, float qx, float qy) {
+    /* The products of floats are exact in double: one rounding, right sign. */
+    return (float)((double)px * (double)qy - (double)py * (double)qx);
+}
+#endif
+
+/* 1 and *hit filled when the ray hits the triangle at t in (0, t_max). */
+WF_INLINE int intersect_triangle(const WatertightRay* ray, float3 v0, float3 v1, float3 v2, float t_max,
+                                 TriangleHit* hit) {
+    const float3 a = v0 - ray->origin;
+    const float3 b = v1 - ray->origin;
+    const float3 c = v2 - ray->origin;
+    const float ax = dot(ray->shear_x, a), ay = dot(ray->shear_y, a);
+    const float bx = dot(ray->shear_x, b), by = dot(ray->shear_y, b);
+    const float cx = dot(ray->shear_x, c), cy = dot(ray->shear_y, c);
+
+    /* e0 is the weight of v0 (the edge v1 v2), e1 of v1, e2 of v2. */
+    float e0 = edge_function(cx, cy, bx, by);
+    float e1 = edge_function(ax, ay, cx, cy);
+    float e2 = edge_function(bx, by, ax, ay);
+#ifdef WF_EDGE_FUNCTION_DOUBLE_FALLBACK
+    if ((e0 == 0.0f) | (e1 == 0.0f) | (e2 == 0.0f)) {
+        e0 = edge_function_exact_sign(cx, cy, bx, by);
+        e1 = edge_function_exact_sign(ax, ay, cx, cy);
+        e2 = edge_function_exact_sign(bx, by, ax, ay);
+    }
+#endif
+    /* Mixed signs: a miss. Bitwise, not short-circuit: one well-predicted
+     * branch instead of six. */
+    const int any_negative = (e0 < 0.0f) | (e1 < 0.0f) | (e2 < 0.0f);
+    const int any_positive = (e0 > 0.0f) | (e1 > 0.0f) | (e2 > 0.0f);
+    if (any_negative & any_positive) return 0;
+    const float det = e0 + e1 + e2;
+    if (det == 0.0f) return 0;
+
+    const float scaled_t = e0 * dot(ray->scale_z, a) + e1 * dot(ray->scale_z, b) + e2 * dot(ray->scale_z, c);
+    const float inv_det = 1.0f / det;
+    const float t = scaled_t * inv_det;
+    if (t <= 0.0f || t >= t_max) return 0;
+    hit->t = t;
+    hit->u = e1 * inv_det;
+    hit->v = e2 * inv_det;
+    return 1;
+}
+
+WF_DEVICE_END
+
+#endif /* WF_TRIANGLE_INTERSECT_H */
