@@ -127,7 +127,11 @@ TEST_P(NextEventEstimation, FloorUnderRectangleMatchesFormFactor) {
 
 // Depth 1 is direct lighting alone; with unlimited depth nothing changes here,
 // since the emitter reflects nothing back.
-INSTANTIATE_TEST_SUITE_P(Depth, NextEventEstimation, ::testing::Values(1u, WF_UNLIMITED_DEPTH));
+INSTANTIATE_TEST_SUITE_P(Depth, NextEventEstimation, ::testing::Values(1u, WF_UNLIMITED_DEPTH),
+                         [](const ::testing::TestParamInfo<uint32_t>& info) {
+                             return info.param == WF_UNLIMITED_DEPTH ? std::string("Unlimited")
+                                                                     : "Max" + std::to_string(info.param);
+                         });
 
 } // namespace
 } // namespace wf

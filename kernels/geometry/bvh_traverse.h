@@ -13,12 +13,12 @@
  * test hits. Three things could make it do so, and each is answered:
  *  - Its own rounding: the far distance is scaled by 1 + 2^-21 >= 1 + 2 gamma_3
  *    (Ize, "Robust BVH Ray Traversal", JCGT 2013; pbrt-v4).
- *  - The triangle test's rounding, which acts like moving each vertex by a few
- *    ulps of its distance from the origin (Woop et al. 2013, section 5) and
- *    moves t by as much: every box is grown by 2^-20 times the root box's reach
- *    from the origin plus |origin|, four times that bound, for free, by moving
- *    the origin used against lower planes up and the one used against upper
- *    planes down.
+ *  - The triangle test's rounding, which acts like moving each vertex by up to
+ *    4 ulps of its distance from the origin (Woop et al. 2013, section 5), and
+ *    moves t by as much. Every box is grown by four times that:
+ *    pad = 2^-20 (16 ulps) x (the root box's reach from the origin + |origin|).
+ *    It costs nothing per node: the origin used against lower planes moves up
+ *    by pad, the one used against upper planes down.
  *  - A direction component of 0: a moved origin on a plane of that axis
  *    would give 0 * infinity = NaN, and OpenCL leaves min and max of NaN
  *    undefined. The reciprocal is clamped to +-FLT_MAX instead, which keeps
@@ -119,6 +119,7 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
                 if (!intersect_triangle(&ray, load_float3(triangles[i].v0), load_float3(triangles[i].v1),
                                         load_float3(triangles[i].v2), t_max, &candidate))
                     continue;
+                /* At equal t the lower index wins, as in a search in index order. */
                 if (candidate.t < hit.t || (candidate.t == hit.t && (int32_t)i < hit.triangle)) {
                     hit.t = candidate.t;
                     hit.u = candidate.u;

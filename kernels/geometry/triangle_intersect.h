@@ -19,9 +19,13 @@
  *
  * OpenCL C cannot index a vector by a runtime value, so the permutation is
  * applied as dot products with unit basis vectors; multiplying by 1 and 0 is
- * exact, so this changes nothing about the rounding. The device compiler must
- * not contract a*b - c*d into a fused multiply-add here (it would break the
- * exact antisymmetry); the pragma below forbids it. */
+ * exact, so this changes nothing about the rounding.
+ *
+ * The device compiler may not contract a * b + c into fused multiply-adds in
+ * these functions (WF_FP_CONTRACT_OFF): every vertex must go through the same
+ * roundings and shared edge functions must stay exact negatives. So the host
+ * (GCC in ISO C++ mode does not contract either) and a device whose division
+ * is correctly rounded, such as PoCL, compute the same bits. */
 #ifndef WF_TRIANGLE_INTERSECT_H
 #define WF_TRIANGLE_INTERSECT_H
 
@@ -35,6 +39,12 @@
 #endif
 #else
 #define WF_EDGE_FUNCTION_DOUBLE_FALLBACK 1
+#endif
+
+#ifdef __OPENCL_C_VERSION__
+#define WF_FP_CONTRACT_OFF _Pragma("OPENCL FP_CONTRACT OFF")
+#else
+#define WF_FP_CONTRACT_OFF
 #endif
 
 WF_DEVICE_BEGIN
@@ -56,6 +66,7 @@ typedef struct TriangleHit {
 } TriangleHit;
 
 WF_INLINE WatertightRay watertight_ray(float3 origin, float3 direction) {
+    WF_FP_CONTRACT_OFF
     /* Rows of the permutation (x, y, z) -> (kx, ky, kz), kz the dominant axis. */
     const float3 a = fabs(direction);
     float3 row_x, row_y, row_z;
@@ -85,9 +96,7 @@ WF_INLINE WatertightRay watertight_ray(float3 origin, float3 direction) {
 /* Twice the signed area of the 2D triangle (0, p, q); swapping p and q negates
  * it exactly. */
 WF_INLINE float edge_function(float px, float py, float qx, float qy) {
-#ifdef __OPENCL_C_VERSION__
-#pragma OPENCL FP_CONTRACT OFF
-#endif
+    WF_FP_CONTRACT_OFF
     return px * qy - py * qx;
 }
 
@@ -101,6 +110,7 @@ WF_INLINE float edge_function_exact_sign(float px, float py, float qx, float qy)
 /* 1 and *hit filled when the ray hits the triangle at t in (0, t_max). */
 WF_INLINE int intersect_triangle(const WatertightRay* ray, float3 v0, float3 v1, float3 v2, float t_max,
                                  TriangleHit* hit) {
+    WF_FP_CONTRACT_OFF
     const float3 a = v0 - ray->origin;
     const float3 b = v1 - ray->origin;
     const float3 c = v2 - ray->origin;

@@ -1,0 +1,533 @@
+// test_bvh.cpp — the BVH builder keeps its promises on random and degenerate
+// input, and traversal answers exactly what brute force over every triangle
+// answers with the same triangle test: the same triangle, the same t to the
+// bit, the same any-hit verdict. A closed mesh shows no cracks.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <random>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bvh_builder.h"
+#include "geometry/bvh_traverse.h"
+
+namespace wf {
+namespace {
+
+using wf_device::RayHit;
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction;
+    float t_max = kInfinity;
+};
+
+uint32_t bits(float f) {
+    uint32_t b;
+    std::memcpy(&b, &f, 4);
+    return b;
+}
+
+glm::vec3 corner(const float* p) { return glm::vec3(p[0], p[1], p[2]); }
+
+void store(float* out, const glm::vec3& p) {
+    out[0] = p.x;
+    out[1] = p.y;
+    out[2] = p.z;
+}
+
+// A scene's triangles with their BVH, in BVH order as the device reads them.
+struct BvhScene {
+    explicit BvhScene(std::vector<glm::vec3> corners)
+        : positions(std::move(corners)), bvh(build_bvh(positions)) {
+        triangles.resize(bvh.order.size());
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            const size_t t = bvh.order[i];
+            store(triangles[i].v0, positions[3 * t]);
+            store(triangles[i].v1, positions[3 * t + 1]);
+            store(triangles[i].v2, positions[3 * t + 2]);
+            triangles[i].material = 0;
+            triangles[i].light = -1;
+            triangles[i].mesh = 0;
+        }
+    }
+    RayHit closest(const Ray& r) const {
+        return wf_device::bvh_closest_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, r.t_max);
+    }
+    bool any(const Ray& r, float t_max) const {
+        return wf_device::bvh_any_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, t_max) != 0;
+    }
+    // Every triangle tested in index order; a strict '<' keeps the lowest index
+    // among equal t, the rule traversal follows.
+    RayHit brute_force(const Ray& r) const {
+        const wf_device::WatertightRay w = wf_device::watertight_ray(r.origin, r.direction);
+        RayHit best{r.t_max, 0.0f, 0.0f, -1};
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            const Triangle& tri = triangles[i];
+            wf_device::TriangleHit h;
+            const bool hit = wf_device::intersect_triangle(&w, corner(tri.v0), corner(tri.v1), corner(tri.v2),
+                                                           r.t_max, &h);
+            if (hit && h.t < best.t) best = RayHit{h.t, h.u, h.v, static_cast<int32_t>(i)};
+        }
+        return best;
+    }
+
+    std::vector<glm::vec3> positions;
+    Bvh bvh;
+    std::vector<Triangle> triangles;
+};
+
+bool inside(const BvhNode& box, const glm::vec3& p) {
+    for (int k = 0; k < 3; ++k)
+        if (!(box.lo[k] <= p[k] && p[k] <= box.hi[k])) return false;
+    return true;
+}
+
+bool inside(const BvhNode& outer, const BvhNode& inner) {
+    return inside(outer, corner(inner.lo)) && inside(outer, corner(inner.hi));
+}
+
+// The promises of bvh_builder.h, checked by walking the tree from the root.
+void expect_valid(const BvhScene& scene) {
+    const Bvh& bvh = scene.bvh;
+    const size_t count = scene.positions.size() / 3;
+    ASSERT_EQ(bvh.order.size(), count);
+    std::vector<int> in_order(count, 0);
+    for (uint32_t t : bvh.order) {
+        ASSERT_LT(t, count);
+        ++in_order[t];
+    }
+    std::vector<int> in_leaves(count, 0), visits(bvh.nodes.size(), 0);
+    std::vector<std::pair<uint32_t, int>> stack{{0u, 1}};
+    int depth = 0;
+    while (!stack.empty()) {
+        const auto [index, level] = stack.back();
+        stack.pop_back();
+        depth = std::max(depth, level);
+        ++visits[index];
+        const BvhNode& node = bvh.nodes[index];
+        if (node.count > 0) {
+            ASSERT_LE(size_t{node.first} + node.count, count);
+            for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+                ++in_leaves[i];
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_TRUE(inside(node, scene.positions[3 * size_t{bvh.order[i]} + c]))
+                        << "node " << index;
+            }
+            continue;
+        }
+        // Children come after their parent, so the walk cannot cycle.
+        ASSERT_GT(node.first, index);
+        ASSERT_LT(size_t{node.first} + 1, bvh.nodes.size());
+        for (uint32_t child = node.first; child <= node.first + 1; ++child) {
+            EXPECT_TRUE(inside(node, bvh.nodes[child]))
+                << "node " << child << " outside its parent " << index;
+            stack.emplace_back(child, level + 1);
+        }
+    }
+    for (size_t t = 0; t < count; ++t) {
+        EXPECT_EQ(in_order[t], 1) << "triangle " << t << " in order";
+        EXPECT_EQ(in_leaves[t], 1) << "BVH position " << t << " in leaves";
+    }
+    for (size_t n = 0; n < visits.size(); ++n) EXPECT_EQ(visits[n], 1) << "node " << n;
+    EXPECT_EQ(depth, bvh.depth);
+    EXPECT_LT(bvh.depth, WF_BVH_STACK_SIZE);
+}
+
+// Closest hits and any-hit verdicts against brute force; returns the number of
+// rays that hit something.
+int expect_agreement(const BvhScene& scene, const std::vector<Ray>& rays) {
+    int failures = 0, hits = 0;
+    auto fail = [&failures](size_t ray, const char* what) {
+        if (++failures <= 10) ADD_FAILURE() << "ray " << ray << ": " << what;
+    };
+    for (size_t i = 0; i < rays.size(); ++i) {
+        Ray unbounded = rays[i];
+        unbounded.t_max = kInfinity;
+        const RayHit all = scene.brute_force(unbounded);
+        // The closest hit below t_max is the closest of all, when that is below t_max.
+        const bool expect_hit = all.triangle >= 0 && all.t < rays[i].t_max;
+        const RayHit got = scene.closest(rays[i]);
+        if (got.triangle != (expect_hit ? all.triangle : -1))
+            fail(i, "closest hit: another triangle");
+        else if (expect_hit &&
+                 (bits(got.t) != bits(all.t) || bits(got.u) != bits(all.u) || bits(got.v) != bits(all.v)))
+            fail(i, "closest hit: another t, u or v");
+        hits += expect_hit;
+
+        // Any-hit limits below, at, just above and beyond the closest hit.
+        const float t = all.t;
+        const float limits[] = {all.triangle >= 0 ? 0.5f * t : 1.0f, t, std::nextafter(t, kInfinity),
+                                2.0f * t};
+        for (float limit : limits)
+            if (scene.any(rays[i], limit) != (all.triangle >= 0 && all.t < limit)) fail(i, "any hit");
+    }
+    EXPECT_EQ(failures, 0);
+    return hits;
+}
+
+// Seeded draws: uniform numbers in [lo, hi), points in a cube, unit vectors.
+struct Random {
+    explicit Random(uint32_t seed) : rng(seed) {}
+    float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+    glm::vec3 point(float lo, float hi) {
+        return glm::vec3(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi));
+    }
+    glm::vec3 unit() {
+        std::normal_distribution<float> n;
+        return glm::normalize(glm::vec3(n(rng), n(rng), n(rng)));
+    }
+    std::mt19937 rng;
+};
+
+void add_triangle(std::vector<glm::vec3>& p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    p.push_back(a);
+    p.push_back(b);
+    p.push_back(c);
+}
+
+// Exactly degenerate: coincident corners, or corners that differ in x only.
+void add_zero_area(Random& r, std::vector<glm::vec3>& p) {
+    const glm::vec3 a = r.point(-10.0f, 10.0f);
+    switch (r.integer(0, 2)) {
+    case 0: add_triangle(p, a, a, r.point(-10.0f, 10.0f)); break;
+    case 1: add_triangle(p, a, a, a); break;
+    default:
+        add_triangle(p, a, a + glm::vec3(r.uniform(-5.0f, 5.0f), 0, 0),
+                     a + glm::vec3(r.uniform(-5.0f, 5.0f), 0, 0));
+    }
+}
+
+// A soup in [-10, 10]^3 of every kind of triangle traversal meets.
+std::vector<glm::vec3> random_soup(Random& r, int count) {
+    std::vector<glm::vec3> p;
+    for (int i = 0; i < count; ++i) {
+        const int kind = i % 10;
+        if (kind < 5) { // ordinary, sizes from 0.01 to 3
+            const glm::vec3 c = r.point(-10.0f, 10.0f);
+            const float size = std::pow(10.0f, r.uniform(-2.0f, 0.5f));
+            add_triangle(p, c + size * r.unit(), c + size * r.unit(), c + size * r.unit());
+        } else if (kind < 7) { // long and thin
+            const glm::vec3 a = r.point(-10.0f, 10.0f);
+            const glm::vec3 b = a + r.uniform(3.0f, 15.0f) * r.unit();
+            const float width = std::pow(10.0f, r.uniform(-4.0f, -2.0f));
+            add_triangle(p, a, b, a + r.uniform(0.0f, 1.0f) * (b - a) + width * r.unit());
+        } else if (kind == 7) { // in an axis plane at a whole coordinate, shared by many
+            const int axis = r.integer(0, 2);
+            const float plane = static_cast<float>(r.integer(-10, 10));
+            glm::vec3 c[3];
+            const glm::vec3 center = r.point(-10.0f, 10.0f);
+            for (glm::vec3& v : c) {
+                v = center + r.uniform(0.1f, 2.0f) * r.unit();
+                v[axis] = plane;
+            }
+            add_triangle(p, c[0], c[1], c[2]);
+        } else if (kind == 8) {
+            add_zero_area(r, p);
+        } else { // an exact copy of an earlier triangle, or a neighbour across one of its edges
+            const size_t t = 3 * static_cast<size_t>(r.integer(0, i - 1));
+            const glm::vec3 a = p[t], b = p[t + 1], c = p[t + 2];
+            if (r.integer(0, 1) == 0)
+                add_triangle(p, a, b, c);
+            else
+                add_triangle(p, b, a, a + b - c);
+        }
+    }
+    return p;
+}
+
+// Rays from inside and outside the soup: random, axis-aligned, with a zero
+// component at a coordinate where boxes have planes, and aimed at corners and
+// edge midpoints; a third of them with a finite t_max.
+std::vector<Ray> random_rays(Random& r, const std::vector<glm::vec3>& p, int count) {
+    std::vector<Ray> rays;
+    auto some_corner = [&]() { return p[static_cast<size_t>(r.integer(0, static_cast<int>(p.size()) - 1))]; };
+    for (int i = 0; i < count; ++i) {
+        const int kind = i % 10;
+        Ray ray;
+        ray.origin = r.point(-10.0f, 10.0f);
+        const float scale = r.uniform(0.1f, 10.0f); // directions need not be unit
+        if (kind < 4) {
+            ray.direction = scale * r.unit();
+        } else if (kind < 6) { // from outside, towards the soup
+            ray.origin = r.point(-30.0f, 30.0f);
+            ray.direction = r.point(-10.0f, 10.0f) - ray.origin;
+        } else if (kind == 6) { // along an axis, often exactly through a corner
+            const int axis = r.integer(0, 2);
+            ray.direction = glm::vec3(0.0f);
+            ray.direction[axis] = r.integer(0, 1) ? scale : -scale;
+            if (r.integer(0, 1)) {
+                const glm::vec3 c = some_corner();
+                for (int k = 0; k < 3; ++k)
+                    if (k != axis) ray.origin[k] = c[k];
+            }
+        } else if (kind == 7) { // in a plane that boxes and axis-plane triangles share
+            const int axis = r.integer(0, 2);
+            ray.direction = scale * r.unit();
+            ray.direction[axis] = 0.0f;
+            ray.origin[axis] = r.integer(0, 1) ? some_corner()[axis] : static_cast<float>(r.integer(-10, 10));
+        } else if (kind == 8) {
+            ray.direction = some_corner() - ray.origin;
+        } else {
+            ray.direction = 0.5f * (some_corner() + some_corner()) - ray.origin;
+        }
+        if (i % 3 == 0) ray.t_max = r.uniform(0.0f, 30.0f) / glm::length(ray.direction);
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+TEST(Bvh, RandomSoupAgreesWithBruteForce) {
+    Random r(1);
+    const BvhScene scene(random_soup(r, 10000));
+    expect_valid(scene);
+    const int hits = expect_agreement(scene, random_rays(r, scene.positions, 100000));
+    EXPECT_GT(hits, 30000); // the comparison is about hits, not only misses
+}
+
+TEST(Bvh, RayAlongABoxFaceEntersTheBox) {
+    // A ray running exactly in a face plane of a box, as an axis-aligned ray
+    // from a point on an axis-aligned floor does, is inside the closed box,
+    // whichever sign its zero component has.
+    BvhNode box{};
+    store(box.lo, glm::vec3(0.0f));
+    store(box.hi, glm::vec3(1.0f));
+    for (float y : {0.0f, 1.0f}) {
+        for (float zero : {0.0f, -0.0f}) {
+            const glm::vec3 origin(0.5f, y, -1.0f);
+            const wf_device::BoxRay ray = wf_device::box_ray(&box, origin, glm::vec3(0.0f, zero, 1.0f));
+            EXPECT_NEAR(wf_device::box_entry(&ray, &box, kInfinity), 1.0f, 1e-5f) << "y = " << y;
+        }
+    }
+}
+
+TEST(Bvh, RejectsEmptyAndMalformedInput) {
+    EXPECT_THROW(build_bvh({}), std::invalid_argument);
+    EXPECT_THROW(build_bvh({glm::vec3(0.0f), glm::vec3(1.0f)}), std::invalid_argument);
+    EXPECT_THROW(build_bvh({glm::vec3(0.0f), glm::vec3(1.0f), glm::vec3(kInfinity, 0.0f, 0.0f)}),
+                 std::invalid_argument);
+}
+
+TEST(Bvh, OneTriangle) {
+    const BvhScene scene({glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
+    expect_valid(scene);
+    EXPECT_EQ(scene.bvh.nodes.size(), 1u);
+    EXPECT_EQ(scene.bvh.depth, 1);
+    const RayHit hit = scene.closest(Ray{glm::vec3(0.25f, 0.25f, 1.0f), glm::vec3(0, 0, -2)});
+    EXPECT_EQ(hit.triangle, 0);
+    EXPECT_EQ(hit.t, 0.5f);
+    EXPECT_EQ(hit.u, 0.25f);
+    EXPECT_EQ(hit.v, 0.25f);
+}
+
+TEST(Bvh, IdenticalTrianglesSplitInHalf) {
+    std::vector<glm::vec3> p;
+    for (int i = 0; i < 10000; ++i)
+        add_triangle(p, glm::vec3(-1, -1, 3), glm::vec3(2, 0, 3), glm::vec3(0, 2, 3.5f));
+    const BvhScene scene(p);
+    expect_valid(scene);
+    EXPECT_EQ(scene.bvh.depth, 13); // 10000 halved 12 times reaches leaves of at most 4
+    // Every copy is hit at the same t: the lowest index wins.
+    const Ray ray{glm::vec3(0.1f, 0.2f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+    const RayHit hit = scene.closest(ray);
+    EXPECT_EQ(hit.triangle, 0);
+    EXPECT_EQ(bits(hit.t), bits(scene.brute_force(ray).t));
+    Random r(2);
+    expect_agreement(scene, random_rays(r, p, 2000));
+}
+
+TEST(Bvh, AllZeroAreaTriangles) {
+    Random r(3);
+    std::vector<glm::vec3> p;
+    for (int i = 0; i < 10000; ++i) add_zero_area(r, p);
+    const BvhScene scene(p);
+    expect_valid(scene);
+    expect_agreement(scene, random_rays(r, p, 5000));
+}
+
+TEST(Bvh, CollinearTriangles) {
+    // Every corner on one axis-parallel line: every box has zero area.
+    std::vector<glm::vec3> line;
+    for (int i = 0; i < 5000; ++i) {
+        const float x = static_cast<float>(i);
+        add_triangle(line, glm::vec3(x, 2, 3), glm::vec3(x + 0.5f, 2, 3), glm::vec3(x + 3.0f, 2, 3));
+    }
+    const BvhScene flat(line);
+    expect_valid(flat);
+    Random r(4);
+    expect_agreement(flat, random_rays(r, line, 2000));
+
+    // Proper triangles strung along a diagonal.
+    std::vector<glm::vec3> string;
+    for (int i = 0; i < 5000; ++i) {
+        const glm::vec3 c = 0.01f * static_cast<float>(i) * glm::vec3(1, 1, 1);
+        add_triangle(string, c, c + glm::vec3(0.02f, 0, 0), c + glm::vec3(0, 0, 0.02f));
+    }
+    const BvhScene diagonal(string);
+    expect_valid(diagonal);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 2000; ++i) // across the string, through its triangles
+        rays.push_back(
+            Ray{glm::vec3(r.uniform(0.0f, 50.0f), -1.0f, r.uniform(0.0f, 50.0f)), glm::vec3(0, 1, 0)});
+    for (Ray& ray : rays) ray.origin.z = ray.origin.x + r.uniform(0.0f, 0.02f);
+    EXPECT_GT(expect_agreement(diagonal, rays), 100);
+}
+
+TEST(Bvh, ExponentialSpacingStaysWithinTheStack) {
+    // Each triangle sits 16.5 times farther out along x than the next, so all
+    // but the outermost share SAH's first bin and every split peels off one
+    // triangle: 66 levels, unless the builder turns to median splits in time.
+    std::vector<glm::vec3> p;
+    for (float x = 1e38f; x > 0.0f; x /= 16.5f)
+        add_triangle(p, glm::vec3(x, 0, 0), glm::vec3(x, 1, 0), glm::vec3(x, 0, 1));
+    ASSERT_GT(p.size() / 3, 66u);
+    const BvhScene scene(p);
+    expect_valid(scene);
+    EXPECT_GT(scene.bvh.depth, 48) << "the input no longer drives SAH towards the depth limit";
+    Random r(5);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 2000; ++i) {
+        const float x = p[3 * static_cast<size_t>(r.integer(0, static_cast<int>(p.size() / 3) - 1))].x;
+        const glm::vec3 origin(x * r.uniform(0.3f, 3.0f), r.uniform(0.0f, 0.5f), r.uniform(0.0f, 0.5f));
+        rays.push_back(
+            Ray{origin, glm::vec3(r.integer(0, 1) ? x : -x, r.uniform(-0.1f, 0.1f), r.uniform(-0.1f, 0.1f))});
+    }
+    EXPECT_GT(expect_agreement(scene, rays), 100);
+}
+
+// A closed mesh: shared corners, given as triangles of corner indices.
+struct Mesh {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::array<uint32_t, 3>> faces;
+    std::vector<glm::vec3> corners() const {
+        std::vector<glm::vec3> p;
+        for (const auto& f : faces) add_triangle(p, vertices[f[0]], vertices[f[1]], vertices[f[2]]);
+        return p;
+    }
+};
+
+// An icosahedron subdivided `levels` times onto a sphere: 20 * 4^levels faces.
+Mesh icosphere(int levels, float radius, glm::vec3 center) {
+    const float g = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<glm::vec3> unit = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                   {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    for (glm::vec3& v : unit) v = glm::normalize(v);
+    std::vector<std::array<uint32_t, 3>> faces = {
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const std::pair<uint32_t, uint32_t> key = std::minmax(a, b);
+            const auto found = midpoints.find(key);
+            if (found != midpoints.end()) return found->second;
+            unit.push_back(glm::normalize(unit[a] + unit[b]));
+            const uint32_t index = static_cast<uint32_t>(unit.size() - 1);
+            midpoints.emplace(key, index);
+            return index;
+        };
+        std::vector<std::array<uint32_t, 3>> finer;
+        for (const auto& f : faces) {
+            const uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+            finer.push_back({f[0], ab, ca});
+            finer.push_back({f[1], bc, ab});
+            finer.push_back({f[2], ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+    Mesh mesh{{}, faces};
+    for (const glm::vec3& v : unit) mesh.vertices.push_back(center + radius * v);
+    return mesh;
+}
+
+// The cube [-1, 1]^3 with n x n squares per face, two triangles each. A corner
+// on a cube edge is computed by the same expression for every face it is on.
+Mesh subdivided_cube(int n) {
+    Mesh mesh;
+    auto coordinate = [n](int i) { return static_cast<float>(2 * i - n) / static_cast<float>(n); };
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            const uint32_t base = static_cast<uint32_t>(mesh.vertices.size());
+            for (int i = 0; i <= n; ++i) {
+                for (int j = 0; j <= n; ++j) {
+                    glm::vec3 v;
+                    v[axis] = side ? 1.0f : -1.0f;
+                    v[(axis + 1) % 3] = coordinate(i);
+                    v[(axis + 2) % 3] = coordinate(j);
+                    mesh.vertices.push_back(v);
+                }
+            }
+            auto at = [&](int i, int j) { return base + static_cast<uint32_t>(i * (n + 1) + j); };
+            for (int i = 0; i < n; ++i) {
+                for (int j = 0; j < n; ++j) {
+                    mesh.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                    mesh.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+                }
+            }
+        }
+    }
+    return mesh;
+}
+
+// Rays from `origin` at every vertex and every edge midpoint of the mesh.
+std::vector<Ray> rays_at_vertices_and_edges(const Mesh& mesh, glm::vec3 origin) {
+    std::vector<Ray> rays;
+    for (const glm::vec3& v : mesh.vertices) rays.push_back(Ray{origin, v - origin});
+    for (const auto& f : mesh.faces)
+        for (int e = 0; e < 3; ++e)
+            rays.push_back(
+                Ray{origin, 0.5f * (mesh.vertices[f[e]] + mesh.vertices[f[(e + 1) % 3]]) - origin});
+    return rays;
+}
+
+// From inside a closed mesh every ray hits it, however exactly it is aimed at
+// the cracks between triangles.
+size_t expect_watertight(const Mesh& mesh, const std::vector<glm::vec3>& origins) {
+    const BvhScene scene(mesh.corners());
+    expect_valid(scene);
+    size_t rays = 0;
+    for (const glm::vec3& origin : origins) {
+        const std::vector<Ray> aimed = rays_at_vertices_and_edges(mesh, origin);
+        size_t misses = 0;
+        for (const Ray& ray : aimed) {
+            misses += scene.closest(ray).triangle < 0;
+            misses += !scene.any(ray, 2.0f); // the target is at t = 1
+        }
+        EXPECT_EQ(misses, 0u) << "from (" << origin.x << ", " << origin.y << ", " << origin.z << ")";
+        // The most delicate rays for the box test: a sample against brute force.
+        std::vector<Ray> sample;
+        for (size_t i = 0; i < aimed.size(); i += 41) sample.push_back(aimed[i]);
+        expect_agreement(scene, sample);
+        rays += aimed.size();
+    }
+    return rays;
+}
+
+TEST(Bvh, ClosedMeshesHaveNoCracks) {
+    const glm::vec3 center(1.0f, 2.0f, -0.5f);
+    const Mesh sphere = icosphere(5, 3.0f, center);
+    ASSERT_GE(sphere.faces.size(), 10000u);
+    size_t rays = expect_watertight(
+        sphere, {center, center + glm::vec3(0.7f, -1.1f, 0.3f), center + glm::vec3(0.0f, 0.0f, 2.9f)});
+    const Mesh cube = subdivided_cube(40);
+    ASSERT_GE(cube.faces.size(), 10000u);
+    // The centre lies on planes of many boxes; its rays to the face centres run
+    // along axes, and to the middle lines of the faces in axis planes.
+    rays += expect_watertight(cube, {glm::vec3(0.0f), glm::vec3(0.3f, -0.6f, 0.85f)});
+    EXPECT_GE(rays, 100000u);
+}
+
+} // namespace
+} // namespace wf
