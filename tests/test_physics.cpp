@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gltf_loader.h"
 #include "render_command.h"
 #include "test_support.h"
 
@@ -61,6 +62,42 @@ TEST_P(Furnace, EveryPixelSeesEmissionOverOneMinusAlbedo) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Albedo, Furnace, ::testing::Values(0.5f, 0.9f));
+
+// With no bounce, a pixel that sees only the light holds exactly its radiance,
+// and a pixel that sees a wall holds exactly nothing.
+TEST(Emission, SeenDirectlyTheLightIsExactlyItsRadiance) {
+    const Scene scene = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    RenderSettings settings;
+    settings.spp = 16;
+    settings.max_depth = 0;
+    const uint32_t n = 64;
+    const RenderOutput out = render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{n, n}, settings);
+    glm::vec3 le(0.0f);
+    for (const SceneMaterial& m : scene.materials) le = glm::max(le, m.emission);
+    // The light's centre projects to column 32, row 9 of 64; it spans about ±5 columns.
+    for (uint32_t x : {30u, 32u, 34u})
+        for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(out.image.rgb[3 * (9 * n + x) + c], le[c]) << x;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(out.image.rgb[3 * (40 * n + 32) + c], 0.0f); // the back wall
+}
+
+// A single-sided emitter is dark from behind; a double-sided one is not.
+TEST(Emission, LeavesTheFrontFaceUnlessDoubleSided) {
+    for (bool double_sided : {false, true}) {
+        Scene scene;
+        const uint32_t m = test::add_material(scene, glm::vec3(0.0f), glm::vec3(2.0f, 3.0f, 4.0f), double_sided);
+        test::add_quad(scene, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, m); // faces +z
+        RenderSettings settings;
+        settings.spp = 4;
+        for (float side : {1.0f, -1.0f}) {
+            const RenderOutput out = render_scene(
+                test::cpu_device(), scene, looking({0, 0, 3 * side}, {0, 0, -side}, {0, 1, 0}, 0.3f),
+                ImageSize{8, 8}, settings);
+            const bool lit = side > 0.0f || double_sided;
+            EXPECT_FLOAT_EQ(out.image.rgb[3 * (4 * 8 + 4) + 2], lit ? 4.0f : 0.0f)
+                << (double_sided ? "double-sided" : "single-sided") << ", seen from " << (side > 0 ? "front" : "back");
+        }
+    }
+}
 
 // Form factor from a point on a plane to the rectangle [0,a]×[0,b] of a parallel
 // plane at height h, one corner straight above the point; odd in a and in b, so
