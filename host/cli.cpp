@@ -4,6 +4,7 @@
 #include "cli.h"
 
 #include <charconv>
+#include <cmath>
 
 #include <OpenImageIO/argparse.h>
 
@@ -22,6 +23,26 @@ uint32_t parse_count(const std::string& flag, const std::string& text, uint64_t 
         throw InputError(flag + " " + text + ": must be between " + std::to_string(lo) + " and " +
                          std::to_string(hi));
     return static_cast<uint32_t>(value);
+}
+
+double parse_positive(const std::string& flag, const std::string& text) {
+    double value = 0.0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (text.empty() || ec != std::errc() || ptr != end || !(value > 0.0) || !std::isfinite(value))
+        throw InputError(flag + " " + text + ": expected a positive number");
+    return value;
+}
+
+// The index of `text` among `choices`, which are listed in the error otherwise.
+uint32_t parse_choice(const std::string& flag, const std::string& text, std::initializer_list<const char*> choices) {
+    uint32_t i = 0;
+    std::string listed;
+    for (const char* c : choices) {
+        if (text == c) return i;
+        listed += (i++ ? "|" : "") + std::string(c);
+    }
+    throw InputError(flag + " " + text + ": expected one of " + listed);
 }
 
 constexpr uint64_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
@@ -71,6 +92,17 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
     ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: 262144)");
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
+    ap.separator("Sampling techniques:");
+    ap.arg("--light-sampling T").help("How emitters are found: bsdf, nee or mis (default: mis)");
+    ap.arg("--hemisphere H").help("Lambertian sampling: uniform or cosine (default: cosine)");
+    ap.arg("--sampler S").help("Sample values: independent or sobol (Owen-scrambled) (default: independent)");
+    ap.arg("--aov A").help("Extra EXR layers: bounces (radiance after 0, 1, ..., 6 and 7+ reflections)");
+    ap.separator("Error against time:");
+    ap.arg("--reference REF").help("Report MSE, relMSE and MAE against this image at every checkpoint");
+    ap.arg("--report CSV").help("Write the checkpoints to this CSV file (seconds,spp,mse,relmse,mae,relmse_estimate)");
+    ap.arg("--report-every SECONDS").help("A checkpoint every this many seconds (default: at each doubling of spp)");
+    ap.arg("--time SECONDS").help("Stop after this many seconds (then --spp, if given, is a cap)");
+    ap.arg("--target-error X").help("Stop once the estimated relMSE is below X (from 16 spp on)");
 
     // ArgParse expects argv[0]; ours is "render".
     if (ap.parse_args(argc - 1, argv + 1) < 0) throw InputError("render: " + ap.geterror());
@@ -93,6 +125,24 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (!text("pool-size").empty()) o.settings.pool_size = parse_count("--pool-size", text("pool-size"), 1, 1u << 26);
     if (!text("camera").empty()) o.camera = static_cast<int>(parse_count("--camera", text("camera"), 0, 1u << 20));
     o.device = text("device");
+    if (!text("light-sampling").empty())
+        o.settings.light_sampling = parse_choice("--light-sampling", text("light-sampling"), {"bsdf", "nee", "mis"});
+    if (!text("hemisphere").empty())
+        o.settings.hemisphere = parse_choice("--hemisphere", text("hemisphere"), {"uniform", "cosine"});
+    if (!text("sampler").empty())
+        o.settings.sampler = parse_choice("--sampler", text("sampler"), {"independent", "sobol"});
+    if (!text("aov").empty()) {
+        parse_choice("--aov", text("aov"), {"bounces"});
+        o.settings.bounce_layers = 8;
+    }
+    o.reference = text("reference");
+    o.report_csv = text("report");
+    if (!text("report-every").empty()) o.progress.report_every = parse_positive("--report-every", text("report-every"));
+    if (!text("time").empty()) o.progress.time_budget = parse_positive("--time", text("time"));
+    if (!text("target-error").empty()) o.progress.target_relmse = parse_positive("--target-error", text("target-error"));
+    // A time budget or a target error alone leaves the sample count open.
+    const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
+    o.progress.max_spp = text("spp").empty() && open_ended ? 0 : o.settings.spp;
     cl.command = Command::Render;
     return cl;
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "progressive_render.h"
 #include "wavefront_scheduler.h"
 
 namespace wf {
@@ -18,6 +19,9 @@ struct RenderOptions {
     int camera = -1;     // -1: the file's first perspective camera
     std::string device;  // empty: the first GPU, else the first device
     RenderSettings settings;
+    ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
+    std::string reference;    // an image to report the error against
+    std::string report_csv;   // where to write the checkpoints as CSV
 };
 
 enum class Command { Render, Devices, Help, Version };

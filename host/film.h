@@ -1,5 +1,6 @@
-// film.h — the per-pixel sums on the device that accumulate.cl adds to, and
-// the image they resolve to: mean radiance per pixel, linear, RGB.
+// film.h — the per-pixel sums on the device that the kernels add to, and what
+// they resolve to on the host: the mean radiance of each pixel, the variance
+// of that mean (for the error estimate), and the per-bounce layers if kept.
 #pragma once
 
 #include <cstdint>
@@ -15,21 +16,28 @@ struct Image {
     std::vector<float> rgb; // 3 floats per pixel, row-major from the top-left
 };
 
+struct FilmReadout {
+    Image mean;                      // linear radiance; black where a pixel has no sample yet
+    Image variance_of_mean;          // s² / n per channel; 0 where n < 2
+    std::vector<Image> bounce_layers; // radiance after 0, 1, ... reflections; the last open-ended
+    uint32_t min_samples = 0;        // the fewest samples any pixel has
+};
+
 class Film {
 public:
-    Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width, uint32_t height);
+    Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width, uint32_t height,
+         uint32_t bounce_layers);
 
-    // The mean of each pixel's samples so far (black where it has none).
-    Image resolve(const cl::CommandQueue& queue) const;
+    FilmReadout read(const cl::CommandQueue& queue) const;
 
-    uint32_t width, height;
-    cl::Buffer sum;          // float4 per pixel
-    cl::Buffer compensation; // float4 per pixel: the low part of sum
-    cl::Buffer samples;      // uint per pixel
-    static size_t bytes_for(uint32_t width, uint32_t height) {
-        return size_t{width} * height * (2 * sizeof(cl_float4) + sizeof(cl_uint));
-    }
-    size_t bytes() const { return bytes_for(width, height); }
+    static size_t bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers);
+    size_t bytes() const { return bytes_for(width, height, bounce_layers); }
+
+    uint32_t width, height, bounce_layers;
+    cl::Buffer sum, compensation;                   // float4 per pixel: the running sum in two parts
+    cl::Buffer sum_squares, squares_compensation;   // float4 per pixel
+    cl::Buffer samples;                             // uint per pixel
+    cl::Buffer layers, layer_compensation;          // float4 per pixel and layer (one element when none)
 };
 
 } // namespace wf

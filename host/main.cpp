@@ -22,7 +22,7 @@ int main(int argc, const char** argv) {
             wf::print_devices(std::cout);
             return 0;
         case wf::Command::Render:
-            wf::print_report(std::cout, wf::run_render(cl.render, std::cerr));
+            wf::print_report(std::cout, wf::run_render(cl.render, std::cout, std::cerr));
             return 0;
         }
     } catch (const wf::InputError& e) {

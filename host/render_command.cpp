@@ -1,43 +1,68 @@
-// render_command.cpp — the order of a render and the checks between its
-// steps: everything that can be rejected (the scene, the flags, the device's
-// memory) is rejected before any long work starts.
+// render_command.cpp — a render from the command line: load, check, render in
+// rounds with a checkpoint table, write. Everything that can be rejected (the
+// scene, the reference, the output format) is rejected before rendering.
 #include "render_command.h"
 
 #include <chrono>
+#include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
 
-#include "bvh_builder.h"
-#include "camera.h"
-#include "device_scene.h"
 #include "errors.h"
 #include "gltf_loader.h"
-#include "image_writer.h"
-#include "kernel_program.h"
-#include "layout_check.h"
-#include "opencl_device.h"
-#include "path_pool.h"
+#include "image_io.h"
+#include "progressive_render.h"
+#include "renderer.h"
 
 namespace wf {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
 
-// The render's buffers must fit the device before anything is allocated.
-void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t pool_bytes, size_t film_bytes,
-                         size_t largest_buffer) {
-    const size_t needed = scene_bytes + pool_bytes + film_bytes;
-    if (needed > device.global_memory)
-        throw InputError("the render needs " + mib(needed) + " of device memory (scene " + mib(scene_bytes) +
-                         ", paths " + mib(pool_bytes) + ", image " + mib(film_bytes) + ") but " + device.name +
-                         " has " + mib(device.global_memory));
-    if (largest_buffer > device.max_allocation)
-        throw InputError("the render needs a " + mib(largest_buffer) + " buffer but " + device.name +
-                         " allocates at most " + mib(device.max_allocation) + " at once");
+// One checkpoint as a table row and a CSV line; error columns stay empty
+// without a reference.
+class CheckpointLog {
+public:
+    CheckpointLog(std::ostream& table, const std::string& csv_path) : table_(table) {
+        if (!csv_path.empty()) {
+            csv_.open(csv_path);
+            if (!csv_) throw InputError(csv_path + ": cannot write the report");
+            csv_ << "seconds,spp,mse,relmse,mae,relmse_estimate\n";
+        }
+        table_ << "   seconds       spp          mse       relmse          mae   relmse est.\n";
+    }
+
+    void add(const Checkpoint& c) {
+        table_ << std::fixed << std::setprecision(3) << std::setw(10) << c.seconds << std::setw(10) << c.spp
+               << std::scientific << std::setprecision(4);
+        if (c.error)
+            table_ << std::setw(13) << c.error->mse << std::setw(13) << c.error->relmse << std::setw(13) << c.error->mae;
+        else
+            table_ << std::setw(39) << "";
+        if (c.relmse_estimate) table_ << std::setw(14) << *c.relmse_estimate;
+        table_ << std::defaultfloat << "\n" << std::flush;
+        if (!csv_.is_open()) return;
+        csv_ << std::setprecision(9) << c.seconds << "," << c.spp << ",";
+        if (c.error) csv_ << c.error->mse << "," << c.error->relmse << "," << c.error->mae;
+        else csv_ << ",,";
+        csv_ << ",";
+        if (c.relmse_estimate) csv_ << *c.relmse_estimate;
+        csv_ << "\n" << std::flush;
+    }
+
+private:
+    std::ostream& table_;
+    std::ofstream csv_;
+};
+
+std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
+    std::vector<ImageLayer> layers;
+    for (size_t i = 0; i < film.bounce_layers.size(); ++i) {
+        const bool last = i + 1 == film.bounce_layers.size();
+        layers.push_back({"bounce" + std::to_string(i) + (last ? "plus" : ""), film.bounce_layers[i]});
+    }
+    return layers;
 }
 
 } // namespace
@@ -49,74 +74,57 @@ void print_devices(std::ostream& out) {
             << " per buffer)\n    platform " << d.platform << ", " << d.version << ", driver " << d.driver << "\n";
 }
 
-RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& scene_camera,
-                          ImageSize size, const RenderSettings& requested) {
-    RenderOutput out;
-    RenderSummary& summary = out.summary;
-    summary.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
-                     " compute units, " + device.info.platform + ")";
-    RenderSettings settings = requested;
-    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, nullptr);
-
-    auto start = std::chrono::steady_clock::now();
-    const Bvh bvh = build_bvh(scene.positions);
-    summary.times.bvh_build = seconds_since(start);
-    const DeviceSceneData data = make_device_scene_data(scene, bvh);
-
-    const size_t pool_bytes = size_t{settings.pool_size} * PathPool::bytes_per_path();
-    const size_t film_bytes = Film::bytes_for(size.width, size.height);
-    check_device_memory(device.info, data.bytes(), pool_bytes, film_bytes,
-                        std::max({data.largest_buffer_bytes(), size_t{size.width} * size.height * sizeof(cl_float4),
-                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
-
-    check_shared_layouts(device);
-    const KernelProgram program = build_kernel_program(device, "wavefront.cl");
-    summary.times.kernel_build = program.build_seconds;
-
-    const DeviceScene device_scene = upload_scene(device.context, data);
-    WavefrontScheduler scheduler(device, program.program, device_scene,
-                                 make_device_camera(scene_camera, size), settings);
-    summary.stats = scheduler.render();
-    out.image = scheduler.film().resolve(device.queue);
-
-    summary.triangles = scene.triangle_count();
-    summary.materials = scene.materials.size();
-    summary.emissive_triangles = data.lights.size();
-    summary.bvh_nodes = bvh.nodes.size();
-    summary.bvh_depth = bvh.depth;
-    summary.width = size.width;
-    summary.height = size.height;
-    summary.spp = settings.spp;
-    summary.device_bytes = device_scene.bytes + summary.stats.pool_bytes + scheduler.film().bytes();
-    return out;
+RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
+                          ImageSize size, const RenderSettings& settings) {
+    Renderer renderer(device, scene, camera, size, settings);
+    renderer.render_to(settings.spp);
+    return RenderOutput{renderer.read(), renderer.summary()};
 }
 
-RenderSummary run_render(const RenderOptions& options, std::ostream& log) {
+RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
-    const double load_seconds = seconds_since(start);
+    const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
-    std::string pool_note;
+
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
+    std::string pool_note;
     choose_pool_size(options.settings.pool_size, size.width * size.height, &pool_note);
     if (!pool_note.empty()) log << "note: " << pool_note << "\n";
+    if (options.settings.bounce_layers && !holds_float_radiance(options.output))
+        throw InputError(options.output + ": --aov layers need a float format such as .exr");
+    std::optional<Image> reference;
+    if (!options.reference.empty()) {
+        reference = read_image(options.reference);
+        if (reference->width != size.width || reference->height != size.height)
+            throw InputError(options.reference + ": the reference is " + std::to_string(reference->width) + "x" +
+                             std::to_string(reference->height) + " but the render is " + std::to_string(size.width) +
+                             "x" + std::to_string(size.height));
+    }
 
     const OpenClDevice device = open_device(options.device);
-    RenderOutput out = render_scene(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()),
-                                    size, options.settings);
+    Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size,
+                      options.settings);
+    ProgressOptions progress = options.progress;
+    progress.reference = reference ? &*reference : nullptr;
+    CheckpointLog checkpoints(out, options.report_csv);
+    const FilmReadout film =
+        render_progressively(renderer, progress, [&](const Checkpoint& c) { checkpoints.add(c); });
+
+    RenderSummary summary = renderer.summary();
     ImageMetadata metadata;
-    metadata.samples_per_pixel = out.summary.spp;
-    metadata.render_seconds = out.summary.stats.seconds;
+    metadata.samples_per_pixel = film.min_samples;
+    metadata.render_seconds = summary.stats.seconds;
     metadata.device = device.info.name;
     metadata.seed = options.settings.seed;
     metadata.scene = options.scene;
-    write_image(options.output, out.image, metadata);
+    write_image(options.output, film.mean, metadata, bounce_layers(film));
 
-    out.summary.scene = options.scene;
-    out.summary.output = options.output;
-    out.summary.times.load = load_seconds;
-    return out.summary;
+    summary.scene = options.scene;
+    summary.output = options.output;
+    summary.times.load = load_seconds;
+    return summary;
 }
 
 } // namespace wf

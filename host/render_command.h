@@ -1,4 +1,5 @@
-// render_command.h — `wavefront render`: load, build, render, write, report.
+// render_command.h — `wavefront render` and `wavefront devices`, and the
+// one-call render the tests use.
 #pragma once
 
 #include <iosfwd>
@@ -13,20 +14,19 @@
 namespace wf {
 
 struct RenderOutput {
-    Image image;
+    FilmReadout film;
     RenderSummary summary;
 };
 
-// Everything after loading: the BVH, the memory check, the kernels, the
-// wavefront loop. Used by run_render and by the tests, so both take one path.
+// Renders `settings.spp` samples per pixel in one round: what the tests use.
 RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
                           ImageSize size, const RenderSettings& settings);
 
-// Runs one render as the options say, writes the image and returns the
-// summary. Progress and the report go to `log`.
-RenderSummary run_render(const RenderOptions& options, std::ostream& log);
+// Runs one render as the options say: checkpoints as a table on `out` (and in
+// the CSV file), notes on `log`, the image written, and the summary returned.
+RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log);
 
-// `wavefront devices`: one line per OpenCL device.
+// `wavefront devices`: every OpenCL device with its index.
 void print_devices(std::ostream& out);
 
 } // namespace wf

@@ -38,40 +38,58 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string*
 WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Program& program,
                                        const DeviceScene& scene, const Camera& camera,
                                        const RenderSettings& settings)
-    : device_(device), settings_(settings),
+    : device_(device), settings_(settings), scene_(scene), camera_(camera),
       pool_(device.context, choose_pool_size(settings.pool_size, camera.width * camera.height, nullptr)),
-      film_(device.context, device.queue, camera.width, camera.height) {
+      film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers) {
     params_.pixel_count = camera.width * camera.height;
     params_.pool_size = pool_.size();
-    params_.spp = settings.spp;
     params_.max_depth = settings.max_depth;
     params_.seed = settings.seed;
     params_.roulette_depth = settings.roulette_depth;
     params_.light_count = scene.light_count;
+    params_.light_sampling = settings.light_sampling;
+    params_.hemisphere = settings.hemisphere;
+    params_.sampler = settings.sampler;
+    params_.bounce_layers = settings.bounce_layers;
+    for (int s = 0; s < STAGE_COUNT; ++s) kernels_[s] = cl::Kernel(program, kStageNames[s]);
+    stats_.pool_size = pool_.size();
+    stats_.pool_bytes = pool_.bytes();
+    for (int s = 0; s < STAGE_COUNT; ++s) stats_.stages[s].name = kStageNames[s];
+    pool_.clear(device.queue); // every slot has started nothing
+}
 
-    for (int s = 0; s < STAGE_COUNT; ++s) {
-        kernels_[s] = cl::Kernel(program, kStageNames[s]);
-        pool_.set_stage_args(kernels_[s], params_);
-    }
-    auto stage_arg = [this](Stage s) { return pool_.set_stage_args(kernels_[s], params_); };
-    kernels_[STAGE_GENERATE].setArg(stage_arg(STAGE_GENERATE), camera);
+// Every kernel's arguments; the render constants change from round to round.
+void WavefrontScheduler::set_stage_args() {
+    auto stage_args = [this](Stage s) { return pool_.set_stage_args(kernels_[s], params_); };
+    kernels_[STAGE_GENERATE].setArg(stage_args(STAGE_GENERATE), camera_);
     for (Stage s : {STAGE_INTERSECT, STAGE_INTERSECT_SHADOW}) {
-        const cl_uint i = stage_arg(s);
-        kernels_[s].setArg(i, scene.nodes);
-        kernels_[s].setArg(i + 1, scene.triangles);
+        const cl_uint i = stage_args(s);
+        kernels_[s].setArg(i, scene_.nodes);
+        kernels_[s].setArg(i + 1, scene_.triangles);
+        if (s == STAGE_INTERSECT_SHADOW) {
+            kernels_[s].setArg(i + 2, film_.layers);
+            kernels_[s].setArg(i + 3, film_.layer_compensation);
+        }
     }
     {
-        const cl_uint i = stage_arg(STAGE_SHADE);
-        kernels_[STAGE_SHADE].setArg(i, scene.triangles);
-        kernels_[STAGE_SHADE].setArg(i + 1, scene.normals);
-        kernels_[STAGE_SHADE].setArg(i + 2, scene.materials);
-        kernels_[STAGE_SHADE].setArg(i + 3, scene.lights);
+        const cl_uint i = stage_args(STAGE_SHADE);
+        cl::Kernel& k = kernels_[STAGE_SHADE];
+        k.setArg(i, scene_.triangles);
+        k.setArg(i + 1, scene_.normals);
+        k.setArg(i + 2, scene_.materials);
+        k.setArg(i + 3, scene_.lights);
+        k.setArg(i + 4, film_.layers);
+        k.setArg(i + 5, film_.layer_compensation);
     }
+    stage_args(STAGE_ROULETTE);
     {
-        const cl_uint i = stage_arg(STAGE_ACCUMULATE);
-        kernels_[STAGE_ACCUMULATE].setArg(i, film_.sum);
-        kernels_[STAGE_ACCUMULATE].setArg(i + 1, film_.compensation);
-        kernels_[STAGE_ACCUMULATE].setArg(i + 2, film_.samples);
+        const cl_uint i = stage_args(STAGE_ACCUMULATE);
+        cl::Kernel& k = kernels_[STAGE_ACCUMULATE];
+        k.setArg(i, film_.sum);
+        k.setArg(i + 1, film_.compensation);
+        k.setArg(i + 2, film_.sum_squares);
+        k.setArg(i + 3, film_.squares_compensation);
+        k.setArg(i + 4, film_.samples);
     }
 }
 
@@ -84,16 +102,15 @@ cl::Event WavefrontScheduler::launch(Stage stage, uint32_t items) {
     return event;
 }
 
-RenderStats WavefrontScheduler::render() {
+void WavefrontScheduler::render_to(uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
     const cl::CommandQueue& queue = device_.queue;
     const uint32_t pool = pool_.size();
-    RenderStats stats;
-    stats.pool_size = pool;
-    stats.pool_bytes = pool_.bytes();
-    for (int s = 0; s < STAGE_COUNT; ++s) stats.stages[s].name = kStageNames[s];
+    params_.spp = spp;
+    set_stage_args();
 
-    // Every slot starts free: the regeneration queue holds them all.
+    // Every slot goes to the regeneration queue; those whose pixels already
+    // have `spp` samples start nothing and drop out at once.
     std::vector<cl_uint> all_slots(pool);
     std::iota(all_slots.begin(), all_slots.end(), 0u);
     queue.enqueueWriteBuffer(pool_.queues, CL_FALSE, sizeof(cl_uint) * WF_QUEUE_REGENERATE * size_t{pool},
@@ -101,7 +118,6 @@ RenderStats WavefrontScheduler::render() {
     std::array<cl_uint, WF_COUNTER_COUNT> counters{};
     counters[WF_QUEUE_REGENERATE] = pool;
     queue.enqueueWriteBuffer(pool_.counters, CL_FALSE, 0, sizeof(counters), counters.data());
-    pool_.clear(queue); // every slot has started nothing
 
     std::vector<std::pair<Stage, cl::Event>> events;
     uint32_t extending = 0, regenerating = pool;
@@ -120,19 +136,18 @@ RenderStats WavefrontScheduler::render() {
 
         extending = counters[WF_QUEUE_EXTEND];
         regenerating = counters[WF_QUEUE_REGENERATE];
-        stats.closest_rays += counters[WF_COUNTER_CLOSEST_RAYS];
-        stats.shadow_rays += counters[WF_COUNTER_SHADOW_RAYS];
-        stats.nonfinite_samples += counters[WF_COUNTER_NONFINITE];
-        stats.samples += counters[WF_QUEUE_FINISHED];
-        ++stats.iterations;
+        stats_.closest_rays += counters[WF_COUNTER_CLOSEST_RAYS];
+        stats_.shadow_rays += counters[WF_COUNTER_SHADOW_RAYS];
+        stats_.nonfinite_samples += counters[WF_COUNTER_NONFINITE];
+        stats_.samples += counters[WF_QUEUE_FINISHED];
+        ++stats_.iterations;
         for (const auto& [stage, event] : events) {
-            stats.stages[stage].seconds += event_seconds(event);
-            ++stats.stages[stage].launches;
+            stats_.stages[stage].seconds += event_seconds(event);
+            ++stats_.stages[stage].launches;
         }
     }
     queue.finish();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 } // namespace wf

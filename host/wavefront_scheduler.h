@@ -5,7 +5,12 @@
 // accumulate, each launched over the queue it reads (sized from the counters
 // read at the end of the previous iteration), then one read of the counters.
 // Freed slots are refilled by generate at the start of the next iteration, so
-// the pool stays full until the last samples are started.
+// the pool stays full until the last samples of a round are started.
+//
+// A render is a sequence of rounds, each taking every pixel to a target
+// sample count; between rounds the film can be read. Since a pixel's samples
+// are traced one after another by its owning slot, the rounds change nothing
+// in the image: N samples in one round or in ten give the same bytes.
 #pragma once
 
 #include <array>
@@ -28,6 +33,10 @@ struct RenderSettings {
     uint32_t pool_size = 0; // 0: chosen from the image and the device
     uint32_t roulette_depth = 3;
     uint32_t local_size = 64;
+    uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
+    uint32_t hemisphere = WF_HEMISPHERE_COSINE;
+    uint32_t sampler = WF_SAMPLER_INDEPENDENT;
+    uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
 };
 
 enum Stage { STAGE_GENERATE, STAGE_INTERSECT, STAGE_SHADE, STAGE_INTERSECT_SHADOW, STAGE_ROULETTE, STAGE_ACCUMULATE, STAGE_COUNT };
@@ -39,7 +48,7 @@ struct StageTime {
 };
 
 struct RenderStats {
-    double seconds = 0.0; // wall time of render()
+    double seconds = 0.0; // wall time spent in render_to()
     uint64_t samples = 0;
     uint64_t closest_rays = 0;
     uint64_t shadow_rays = 0;
@@ -61,20 +70,25 @@ public:
     WavefrontScheduler(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
                        const Camera& camera, const RenderSettings& settings);
 
-    // Renders all samples into the film and returns what it cost.
-    RenderStats render();
+    // Continues every pixel up to `spp` samples (a round).
+    void render_to(uint32_t spp);
 
+    const RenderStats& stats() const { return stats_; }
     const Film& film() const { return film_; }
 
 private:
     cl::Event launch(Stage stage, uint32_t items);
+    void set_stage_args();
 
     const OpenClDevice& device_;
     RenderSettings settings_;
     RenderParams params_{};
+    const DeviceScene& scene_;
+    Camera camera_;
     PathPool pool_;
     Film film_;
     std::array<cl::Kernel, STAGE_COUNT> kernels_;
+    RenderStats stats_;
 };
 
 } // namespace wf

@@ -19,7 +19,7 @@ Image render_cornell(uint32_t pool_size, uint32_t local_size, uint32_t seed) {
     settings.seed = seed;
     settings.pool_size = pool_size;
     settings.local_size = local_size;
-    return render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, settings).image;
+    return render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, settings).film.mean;
 }
 
 bool same_bytes(const Image& a, const Image& b) {

@@ -48,13 +48,13 @@ TEST_P(Furnace, EveryPixelSeesEmissionOverOneMinusAlbedo) {
     const double expected = emission / (1.0 - albedo);
     const size_t pixels = 48 * 48;
     for (int c = 0; c < 3; ++c) {
-        const test::ChannelStats s = test::channel_stats(out.image, c);
+        const test::ChannelStats s = test::channel_stats(out.film.mean, c);
         // The pixels are independent estimates of one value: their mean lies
         // within 4 standard errors of it, and each pixel within 5.5 spreads
         // (a two-sided 5.5σ tail over 2304 pixels fails with probability < 1e-4).
         EXPECT_NEAR(s.mean, expected, 4.0 * s.stddev / std::sqrt(double(pixels))) << "channel " << c;
         for (size_t p = 0; p < pixels; ++p)
-            ASSERT_NEAR(out.image.rgb[3 * p + c], expected, 5.5 * s.stddev) << "pixel " << p << " channel " << c;
+            ASSERT_NEAR(out.film.mean.rgb[3 * p + c], expected, 5.5 * s.stddev) << "pixel " << p << " channel " << c;
     }
     // Roulette must be what ends these paths: mean length near 1 / (1 − ρ).
     const double mean_path = double(out.summary.stats.closest_rays) / out.summary.stats.samples;
@@ -76,8 +76,8 @@ TEST(Emission, SeenDirectlyTheLightIsExactlyItsRadiance) {
     for (const SceneMaterial& m : scene.materials) le = glm::max(le, m.emission);
     // The light's centre projects to column 32, row 9 of 64; it spans about ±5 columns.
     for (uint32_t x : {30u, 32u, 34u})
-        for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(out.image.rgb[3 * (9 * n + x) + c], le[c]) << x;
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(out.image.rgb[3 * (40 * n + 32) + c], 0.0f); // the back wall
+        for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(out.film.mean.rgb[3 * (9 * n + x) + c], le[c]) << x;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(out.film.mean.rgb[3 * (40 * n + 32) + c], 0.0f); // the back wall
 }
 
 // A single-sided emitter is dark from behind; a double-sided one is not.
@@ -93,7 +93,7 @@ TEST(Emission, LeavesTheFrontFaceUnlessDoubleSided) {
                 test::cpu_device(), scene, looking({0, 0, 3 * side}, {0, 0, -side}, {0, 1, 0}, 0.3f),
                 ImageSize{8, 8}, settings);
             const bool lit = side > 0.0f || double_sided;
-            EXPECT_FLOAT_EQ(out.image.rgb[3 * (4 * 8 + 4) + 2], lit ? 4.0f : 0.0f)
+            EXPECT_FLOAT_EQ(out.film.mean.rgb[3 * (4 * 8 + 4) + 2], lit ? 4.0f : 0.0f)
                 << (double_sided ? "double-sided" : "single-sided") << ", seen from " << (side > 0 ? "front" : "back");
         }
     }
@@ -144,7 +144,7 @@ TEST_P(NextEventEstimation, FloorUnderRectangleMatchesFormFactor) {
         for (uint32_t i = 0; i < n; ++i) {
             const double sx = 2.0 * (i + 0.5) / n - 1.0, sy = 1.0 - 2.0 * (j + 0.5) / n;
             const double expected = albedo * radiance * rectangle_form_factor(-0.5 * sx, 0.5 * sy, x0, x1, z0, z1, height);
-            ratio[j * n + i] = out.image.rgb[3 * (j * n + i)] / expected;
+            ratio[j * n + i] = out.film.mean.rgb[3 * (j * n + i)] / expected;
         }
     // Blocks of 8×8 pixels: each block's mean ratio is 1 within 5 standard
     // errors of that block (64 blocks).

@@ -3,9 +3,10 @@
  * and WF_DEVICE_END.
  *
  * Shared code is written against this vocabulary: fixed-width integers, float3
- * with dot/cross/min/max, make_float3, as_uint/as_float, and WF_GLOBAL for the
- * address space of scene buffers. On the device these are the OpenCL built-ins;
- * on the host they map onto GLM and <cstring>. Nothing else belongs here. */
+ * with dot/cross/min/max, make_float3, float4 with make_float4, as_uint/as_float,
+ * and WF_GLOBAL for the address space of scene buffers. On the device these are
+ * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
+ * else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
 #define WAVEFRONT_COMPAT_H
 
@@ -16,6 +17,7 @@ typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_INLINE inline
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
+#define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define WF_DEVICE_BEGIN
 #define WF_DEVICE_END
 WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
@@ -32,6 +34,8 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 namespace wf_compat {
 using float3 = glm::vec3;
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
+using float4 = glm::vec4;
+inline float4 make_float4(float x, float y, float z, float w) { return float4(x, y, z, w); }
 inline float as_float(uint32_t bits) { float f; std::memcpy(&f, &bits, 4); return f; }
 inline uint32_t as_uint(float f) { uint32_t bits; std::memcpy(&bits, &f, 4); return bits; }
 inline float3 load_float3(const float* p) { return float3(p[0], p[1], p[2]); }

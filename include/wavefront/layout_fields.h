@@ -19,6 +19,7 @@
     X(Camera, width) X(Camera, forward) X(Camera, height)                                         \
     X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
-    X(RenderParams, light_count)
+    X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
+    X(RenderParams, sampler) X(RenderParams, bounce_layers)
 
 #endif /* WAVEFRONT_LAYOUT_FIELDS_H */

@@ -14,13 +14,32 @@
 typedef struct RenderParams {
     uint32_t pixel_count;
     uint32_t pool_size;      /* path slots; slot i owns pixels i, i + pool, ... */
-    uint32_t spp;            /* samples per pixel to reach */
-    uint32_t max_depth;      /* bounces; 0xffffffff = ended by roulette alone */
+    uint32_t spp;            /* samples per pixel to reach in the current round */
+    uint32_t max_depth;      /* bounces; WF_UNLIMITED_DEPTH = ended by roulette alone */
     uint32_t seed;
     uint32_t roulette_depth; /* first depth at which roulette may end a path */
     uint32_t light_count;    /* entries in the light table */
+    uint32_t light_sampling; /* WF_LIGHT_SAMPLING_* */
+    uint32_t hemisphere;     /* WF_HEMISPHERE_* */
+    uint32_t sampler;        /* WF_SAMPLER_* */
+    uint32_t bounce_layers;  /* film layers by bounce count (0: none), the last one open-ended */
     uint32_t pad;
 } RenderParams;
+
+/* How emitters are found: by BRDF sampling alone, by next-event estimation
+ * alone, or both weighted by the power heuristic. */
+#define WF_LIGHT_SAMPLING_BSDF 0u
+#define WF_LIGHT_SAMPLING_NEE 1u
+#define WF_LIGHT_SAMPLING_MIS 2u
+
+/* How the Lambertian lobe chooses directions: pdf 1/2pi, or cos/pi. */
+#define WF_HEMISPHERE_UNIFORM 0u
+#define WF_HEMISPHERE_COSINE 1u
+
+/* Where sample values come from: hashed independent numbers, or an
+ * Owen-scrambled Sobol sequence. Both are functions of (pixel, sample, bounce). */
+#define WF_SAMPLER_INDEPENDENT 0u
+#define WF_SAMPLER_SOBOL 1u
 
 #define WF_UNLIMITED_DEPTH 0xffffffffu
 

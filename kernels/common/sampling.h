@@ -39,6 +39,14 @@ inline float3 sample_cosine_hemisphere(float2 u) {
     return (float3)(d.x, d.y, z);
 }
 
+/* A direction about +z with density 1 / 2pi. */
+inline float3 sample_uniform_hemisphere(float2 u) {
+    const float z = u.x;
+    const float r = sqrt(max(0.0f, 1.0f - z * z));
+    const float phi = 2.0f * WF_PI * u.y;
+    return (float3)(r * cos(phi), r * sin(phi), z);
+}
+
 /* Barycentrics (b1, b2) of a point uniform in area on a triangle. */
 inline float2 sample_triangle_uniform(float2 u) {
     const float su = sqrt(u.x);

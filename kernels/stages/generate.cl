@@ -7,7 +7,7 @@
  * samples are all started stays out of the queues. */
 #include "path_state.h"
 #include "wavefront/scene_types.h"
-#include "common/rng.h"
+#include "common/sample_values.h"
 #include "common/queue_push.h"
 
 inline bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
@@ -18,7 +18,7 @@ inline bool start_camera_sample(PathState* path, const RenderParams* params, con
     if (sample >= params->spp) return false;
     const uint pixel = slot + (work % pixels_owned) * params->pool_size;
 
-    const float4 u = rng_uniform4(params->seed, pixel, sample, 0u, WF_RNG_CAMERA);
+    const float4 u = sample_values(params, pixel, sample, 0u, WF_RNG_CAMERA);
     const float x = ((float)(pixel % camera->width) + u.x) / (float)camera->width;
     const float y = ((float)(pixel / camera->width) + u.y) / (float)camera->height;
     const float sx = (2.0f * x - 1.0f) * camera->tan_half_fov_y * camera->aspect;

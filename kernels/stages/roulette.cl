@@ -4,7 +4,7 @@
  * q = min(1, max component of its throughput) and its throughput is divided by
  * q; survivors return to the extension queue, the rest are finished. */
 #include "path_state.h"
-#include "common/rng.h"
+#include "common/sample_values.h"
 #include "common/queue_push.h"
 
 inline bool survives_roulette(PathState* path, const RenderParams* params, uint slot) {
@@ -13,7 +13,7 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
     const float3 throughput = path->throughput[slot].xyz;
     const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
     /* The third number of the BSDF group of the bounce that chose this ray. */
-    const float u = rng_uniform4(params->seed, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).z;
+    const float u = sample_values(params, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).z;
     if (!(u < q)) return false;
     path->throughput[slot].xyz = throughput / q;
     return true;

@@ -1,15 +1,18 @@
 /* shade — what happens where a ray landed.
  *
  * For each path in the extension queue: a miss ends the path (no environment
- * yet); a hit on an emitter adds its radiance, weighted by MIS against the
- * light sampling done at the previous bounce; then, unless the path has reached
- * --max-depth, one light sample is prepared for intersect_shadow and the
- * Lambertian BRDF chooses the continuation ray, which roulette may end. */
+ * yet); a hit on an emitter adds its radiance; then, unless the path has
+ * reached --max-depth, one light sample is prepared for intersect_shadow (next-
+ * event estimation) and the Lambertian BRDF chooses the continuation ray, which
+ * roulette may end. --light-sampling decides which of the two techniques
+ * counts emitted light: BRDF sampling alone, NEE alone, or both weighted by the
+ * power heuristic (MIS), so that no light is counted twice. */
 #include "path_state.h"
-#include "common/rng.h"
 #include "common/finite.h"
+#include "common/bounce_layers.h"
 #include "common/ray_offset.h"
 #include "common/queue_push.h"
+#include "common/sample_values.h"
 #include "bsdf/lambert.h"
 #include "lights/emissive_triangles.h"
 
@@ -42,9 +45,19 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
     return s;
 }
 
+/* The weight of emission that BRDF sampling found, given the density with
+ * which light sampling would have found it. A camera ray (pdf_bsdf 0) sees
+ * emitters whatever the technique. */
+inline float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_light) {
+    if (pdf_bsdf == 0.0f || light_sampling == WF_LIGHT_SAMPLING_BSDF) return 1.0f;
+    if (light_sampling == WF_LIGHT_SAMPLING_NEE) return 0.0f;
+    return power_heuristic(pdf_bsdf, pdf_light);
+}
+
 inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                        __global const Triangle* triangles, __global const TriangleNormals* normals,
-                       __global const Material* materials, __global const LightEntry* lights) {
+                       __global const Material* materials, __global const LightEntry* lights,
+                       __global float4* layers, __global float4* layer_compensation) {
     const float4 hit = path->hit[slot];
     const int triangle = as_int(hit.w);
     if (triangle < 0) return WF_SHADE_FINISHED;
@@ -58,17 +71,16 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const __global Triangle* t = &triangles[triangle];
     const __global Material* m = &materials[t->material];
     const SurfaceHit s = surface_at(t, &normals[triangle], hit, direction);
-    float3 throughput = path->throughput[slot].xyz;
+    const float3 throughput = path->throughput[slot].xyz;
 
     /* Emission seen along the ray. */
     if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
-        float weight = 1.0f;
-        if (pdf_previous > 0.0f && params->light_count > 0u) {
-            const float cos_light = -dot(s.geometric_normal, direction);
-            const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
-            weight = power_heuristic(pdf_previous, pdf_light);
-        }
-        path->radiance[slot].xyz += weight * throughput * vload3(0, m->emission);
+        const float cos_light = -dot(s.geometric_normal, direction);
+        const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
+        const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
+        const float3 emitted = weight * throughput * vload3(0, m->emission);
+        path->radiance[slot].xyz += emitted;
+        add_to_bounce_layer(params, layers, layer_compensation, pixel, depth, emitted);
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
@@ -77,33 +89,35 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const float3 origin = offset_ray_origin(s.position, s.geometric_normal);
     uint outcome = WF_SHADE_FINISHED;
 
-    /* Next-event estimation: one point on one emitter, weighted against the BRDF. */
-    if (params->light_count > 0u) {
-        const float4 u = rng_uniform4(params->seed, pixel, sample, depth, WF_RNG_LIGHT);
+    /* Next-event estimation: one point on one emitter. */
+    if (params->light_count > 0u && params->light_sampling != WF_LIGHT_SAMPLING_BSDF) {
+        const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
         const LightSample ls = sample_light(lights, params->light_count, triangles, materials, s.position, u);
-        const float3 to_light = ls.point - s.position;
-        const float3 wi = normalize(to_light);
+        const float3 wi = normalize(ls.point - s.position);
         const float cos_surface = dot(s.shading_normal, wi);
         if (ls.pdf > 0.0f && cos_surface > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
-            const float weight = power_heuristic(ls.pdf, lambert_pdf(s.shading_normal, wi));
+            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS
+                                     ? power_heuristic(ls.pdf, lambert_pdf(s.shading_normal, wi, params->hemisphere))
+                                     : 1.0f;
             const float3 contribution = throughput * f * ls.radiance * (cos_surface * weight / ls.pdf);
             if (is_finite3(contribution)) {
                 const float3 target = offset_ray_origin(ls.point, ls.normal);
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] = (float4)(target - origin, 0.0f);
-                path->shadow_radiance[slot] = (float4)(contribution, 0.0f);
+                /* w: the bounce layer the light joins if it arrives. */
+                path->shadow_radiance[slot] = (float4)(contribution, as_float(depth + 1u));
                 outcome |= WF_SHADE_SHADOW_RAY;
             }
         }
     }
 
-    /* The continuation, by cosine-weighted BRDF sampling; f · cos / pdf = albedo. */
-    const float4 u = rng_uniform4(params->seed, pixel, sample, depth, WF_RNG_BSDF);
-    const float3 wi = lambert_sample(s.shading_normal, u.xy);
-    const float pdf = lambert_pdf(s.shading_normal, wi);
+    /* The continuation, by BRDF sampling. */
+    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF);
+    const float3 wi = lambert_sample(s.shading_normal, u.xy, params->hemisphere);
+    const float pdf = lambert_pdf(s.shading_normal, wi, params->hemisphere);
     /* A direction below the geometric surface would leak through it. */
     if (pdf > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
-        path->throughput[slot].xyz = throughput * albedo;
+        path->throughput[slot].xyz = throughput * f * (dot(s.shading_normal, wi) / pdf);
         path->ray_origin[slot] = (float4)(origin, 0.0f);
         path->ray_direction[slot] = (float4)(wi, pdf);
         path->depth[slot] = depth + 1u;
@@ -114,13 +128,15 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
 
 __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     __global const TriangleNormals* normals, __global const Material* materials,
-                    __global const LightEntry* lights) {
+                    __global const LightEntry* lights, __global float4* layers,
+                    __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint outcome =
-        active ? shade_path(&path, &params, slot, triangles, normals, materials, lights) : WF_SHADE_FINISHED;
+    const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights,
+                                             layers, layer_compensation)
+                                : WF_SHADE_FINISHED;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot,
                (outcome & WF_SHADE_SHADOW_RAY) != 0u, scratch);

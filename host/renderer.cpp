@@ -1,0 +1,76 @@
+// renderer.cpp — the order of set-up: everything that can be rejected (the
+// device's memory) is rejected before any long work starts.
+#include "renderer.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bvh_builder.h"
+#include "errors.h"
+#include "layout_check.h"
+#include "path_pool.h"
+
+namespace wf {
+namespace {
+
+std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
+
+void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t pool_bytes, size_t film_bytes,
+                         size_t largest_buffer) {
+    const size_t needed = scene_bytes + pool_bytes + film_bytes;
+    if (needed > device.global_memory)
+        throw InputError("the render needs " + mib(needed) + " of device memory (scene " + mib(scene_bytes) +
+                         ", paths " + mib(pool_bytes) + ", image " + mib(film_bytes) + ") but " + device.name +
+                         " has " + mib(device.global_memory));
+    if (largest_buffer > device.max_allocation)
+        throw InputError("the render needs a " + mib(largest_buffer) + " buffer but " + device.name +
+                         " allocates at most " + mib(device.max_allocation) + " at once");
+}
+
+} // namespace
+
+Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
+                   const RenderSettings& requested)
+    : device_(device) {
+    RenderSettings settings = requested;
+    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, nullptr);
+
+    const auto start = std::chrono::steady_clock::now();
+    const Bvh bvh = build_bvh(scene.positions);
+    summary_.times.bvh_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const DeviceSceneData data = make_device_scene_data(scene, bvh);
+
+    const size_t pixels = size_t{size.width} * size.height;
+    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
+                        Film::bytes_for(size.width, size.height, settings.bounce_layers),
+                        std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
+                                  pixels * sizeof(cl_float4),
+                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
+
+    check_shared_layouts(device);
+    program_ = build_kernel_program(device, "wavefront.cl");
+    device_scene_ = upload_scene(device.context, data);
+    scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_,
+                                                      make_device_camera(camera, size), settings);
+
+    summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
+                      " compute units, " + device.info.platform + ")";
+    summary_.times.kernel_build = program_.build_seconds;
+    summary_.triangles = scene.triangle_count();
+    summary_.materials = scene.materials.size();
+    summary_.emissive_triangles = data.lights.size();
+    summary_.bvh_nodes = bvh.nodes.size();
+    summary_.bvh_depth = bvh.depth;
+    summary_.width = size.width;
+    summary_.height = size.height;
+    summary_.device_bytes = device_scene_.bytes + scheduler_->stats().pool_bytes + scheduler_->film().bytes();
+}
+
+RenderSummary Renderer::summary() const {
+    RenderSummary s = summary_;
+    s.stats = stats();
+    s.spp = static_cast<uint32_t>(s.stats.samples / (size_t{s.width} * s.height));
+    return s;
+}
+
+} // namespace wf

@@ -1,0 +1,42 @@
+// renderer.h — a scene made ready on one device: its BVH built and uploaded,
+// the memory it needs checked against the device, the kernels built and the
+// wavefront scheduler set up. It then renders in rounds, and its film can be
+// read between them. The command line and the tests both go through it.
+#pragma once
+
+#include <memory>
+
+#include "camera.h"
+#include "device_scene.h"
+#include "film.h"
+#include "kernel_program.h"
+#include "opencl_device.h"
+#include "render_report.h"
+#include "scene.h"
+#include "wavefront_scheduler.h"
+
+namespace wf {
+
+class Renderer {
+public:
+    // Throws InputError when the render cannot fit the device, before allocating.
+    Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
+             const RenderSettings& settings);
+
+    // Continues every pixel up to `spp` samples.
+    void render_to(uint32_t spp) { scheduler_->render_to(spp); }
+    FilmReadout read() const { return scheduler_->film().read(device_.queue); }
+    const RenderStats& stats() const { return scheduler_->stats(); }
+
+    // What the closing report says of this render so far.
+    RenderSummary summary() const;
+
+private:
+    const OpenClDevice& device_;
+    RenderSummary summary_;
+    DeviceScene device_scene_;
+    KernelProgram program_;
+    std::unique_ptr<WavefrontScheduler> scheduler_;
+};
+
+} // namespace wf
