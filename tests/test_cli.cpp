@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -112,6 +113,62 @@ TEST_F(Cli, RendersPngAndExrWithMetadata) {
     EXPECT_EQ(spec.get_int_attribute("wavefront:seed"), 5);
     EXPECT_GT(spec.get_float_attribute("wavefront:renderTimeSeconds"), 0.0f);
     EXPECT_FALSE(spec.get_string_attribute("wavefront:device").empty());
+}
+
+TEST_F(Cli, ReportsErrorAgainstTimeAsCsv) {
+    const std::string small = "render " + kCornell + " --width 24 --height 24 ";
+    ASSERT_EQ(run(small + "--spp 64 -o " + path("ref.exr")).exit_code, 0);
+    const ProcessResult r = run(small + "--spp 16 --reference " + path("ref.exr") + " --report " + path("r.csv") +
+                                " -o " + path("x.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string csv = test::read_file(path("r.csv"));
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "seconds,spp,mse,relmse,mae,relmse_estimate");
+    // A checkpoint at each doubling, every error column filled in but the
+    // estimate at 1 spp (one sample has no variance).
+    std::istringstream rows(csv.substr(csv.find('\n') + 1));
+    std::vector<int> spp;
+    for (std::string row; std::getline(rows, row);) {
+        spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
+        EXPECT_EQ(row.find(",,"), std::string::npos) << row;
+        EXPECT_EQ(row.back() == ',', spp.back() == 1) << row;
+    }
+    EXPECT_EQ(spp, (std::vector<int>{1, 2, 4, 8, 16}));
+
+    expect_rejected(small + "--spp 4 --reference " + path("ref.exr") + " --width 25 -o " + path("y.exr"), "ref.exr");
+    EXPECT_FALSE(fs::exists(path("y.exr")));
+}
+
+TEST_F(Cli, StopsAtTheTimeBudgetOrTheTargetError) {
+    const std::string small = "render " + kCornell + " --width 24 --height 24 ";
+    ASSERT_EQ(run(small + "--time 1 --report " + path("t.csv") + " -o " + path("t.exr")).exit_code, 0);
+    const std::string csv = test::read_file(path("t.csv"));
+    const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+    const double seconds = std::stod(last);
+    const int spp = std::stoi(last.substr(last.find(',') + 1));
+    EXPECT_GT(spp, 16) << "open-ended: --time without --spp is not capped at the default";
+    EXPECT_LT(seconds, 1.5) << csv;
+    auto in = OIIO::ImageInput::open(path("t.exr"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().get_int_attribute("wavefront:samplesPerPixel"), spp);
+
+    ASSERT_EQ(run(small + "--target-error 0.05 --report " + path("e.csv") + " -o " + path("e.exr")).exit_code, 0);
+    const std::string errors = test::read_file(path("e.csv"));
+    const std::string final_row = errors.substr(errors.rfind('\n', errors.size() - 2) + 1);
+    EXPECT_LT(std::stod(final_row.substr(final_row.rfind(',') + 1)), 0.05) << errors;
+}
+
+TEST_F(Cli, WritesBounceLayersToExr) {
+    const std::string small = "render " + kCornell + " --width 16 --height 16 --spp 2 --aov bounces ";
+    ASSERT_EQ(run(small + "-o " + path("layers.exr")).exit_code, 0);
+    auto in = OIIO::ImageInput::open(path("layers.exr"));
+    ASSERT_TRUE(in);
+    const std::vector<std::string>& names = in->spec().channelnames;
+    ASSERT_EQ(names.size(), 27u);
+    EXPECT_EQ(names[3], "bounce0.R");
+    EXPECT_EQ(names[26], "bounce7plus.B");
+    expect_rejected(small + "-o " + path("layers.png"), "layers.png");
+    expect_rejected("render " + kCornell + " --sampler halton", "--sampler halton");
+    expect_rejected("render " + kCornell + " --time -3", "--time -3");
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 
 #include "gltf_loader.h"
 #include "render_command.h"
+#include "renderer.h"
 #include "test_support.h"
 
 namespace wf {
@@ -32,6 +33,18 @@ TEST(Determinism, PoolAndLocalSizeDoNotChangeOneBit) {
     EXPECT_TRUE(same_bytes(reference, render_cornell(777, 64, 3))); // does not divide 1200
     EXPECT_TRUE(same_bytes(reference, render_cornell(1200, 32, 3)));
     EXPECT_FALSE(same_bytes(reference, render_cornell(1200, 64, 4))); // the seed does matter
+}
+
+// Stopping to look at the film between rounds changes nothing: a pixel's
+// samples are still traced and summed in order by its owning slot.
+TEST(Determinism, RoundsDoNotChangeOneBit) {
+    const Scene scene = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    RenderSettings settings;
+    settings.seed = 3;
+    settings.pool_size = 777;
+    Renderer progressive(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, settings);
+    for (uint32_t spp : {1u, 2u, 3u, 4u}) progressive.render_to(spp);
+    EXPECT_TRUE(same_bytes(render_cornell(1200, 64, 3), progressive.read().mean));
 }
 
 } // namespace

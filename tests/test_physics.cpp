@@ -99,6 +99,30 @@ TEST(Emission, LeavesTheFrontFaceUnlessDoubleSided) {
     }
 }
 
+// The per-bounce layers split the image without losing or adding light: they
+// sum to it, and in the Cornell box the light seen directly is bounce 0 alone.
+TEST(BounceLayers, SumToTheImage) {
+    const Scene scene = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    RenderSettings settings;
+    settings.spp = 8;
+    settings.bounce_layers = 4;
+    const RenderOutput out = render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{32, 32}, settings);
+    ASSERT_EQ(out.film.bounce_layers.size(), 4u);
+    double image = 0.0, layers = 0.0, layer_energy[4] = {0, 0, 0, 0};
+    for (size_t i = 0; i < out.film.mean.rgb.size(); ++i) {
+        image += out.film.mean.rgb[i];
+        for (int l = 0; l < 4; ++l) {
+            layers += out.film.bounce_layers[l].rgb[i];
+            layer_energy[l] += out.film.bounce_layers[l].rgb[i];
+        }
+    }
+    EXPECT_NEAR(layers, image, 1e-5 * image);
+    for (int l = 0; l < 4; ++l) EXPECT_GT(layer_energy[l], 0.0) << "layer " << l;
+    // Row 4 of 32 sees the light: there bounce 0 is the light's radiance plus nothing else of note.
+    const size_t light_pixel = 3 * (4 * 32 + 16);
+    EXPECT_GT(out.film.bounce_layers[0].rgb[light_pixel], 0.9f * out.film.mean.rgb[light_pixel]);
+}
+
 // Form factor from a point on a plane to the rectangle [0,a]×[0,b] of a parallel
 // plane at height h, one corner straight above the point; odd in a and in b, so
 // any axis-aligned rectangle follows by inclusion–exclusion of its corners.
