@@ -22,8 +22,14 @@ class PathPool {
 public:
     PathPool(const cl::Context& context, uint32_t pool_size);
 
-    // Sets the arguments every stage kernel begins with (WF_STAGE_PARAMS in
-    // kernels/path_state.h) and returns the index of the first stage-specific one.
+#define WF_COUNT_PATH_FIELD(type, name, what) +1
+    // How many arguments every stage kernel begins with (WF_STAGE_PARAMS in
+    // kernels/path_state.h): one per path-state field, then params, queues, counters.
+    static constexpr cl_uint kSharedStageArgs = 3 WF_PATH_STATE(WF_COUNT_PATH_FIELD);
+#undef WF_COUNT_PATH_FIELD
+
+    // Sets those shared arguments; returns kSharedStageArgs, the index of the
+    // first stage-specific one.
     cl_uint set_stage_args(cl::Kernel& kernel, const RenderParams& params) const;
 
     // Zeroes every path-state field, before a render starts.

@@ -58,39 +58,29 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
     pool_.clear(device.queue); // every slot has started nothing
 }
 
-// Every kernel's arguments; the render constants change from round to round.
+// Sets consecutive arguments of `kernel` from index `first` on.
+template <class... Args> void set_kernel_args(cl::Kernel& kernel, cl_uint first, const Args&... args) {
+    (kernel.setArg(first++, args), ...);
+}
+
+// Every kernel's arguments: the shared ones (WF_STAGE_PARAMS), then its own.
+// The render constants change from round to round.
 void WavefrontScheduler::set_stage_args() {
-    auto stage_args = [this](Stage s) { return pool_.set_stage_args(kernels_[s], params_); };
-    kernels_[STAGE_GENERATE].setArg(stage_args(STAGE_GENERATE), camera_);
-    for (Stage s : {STAGE_INTERSECT, STAGE_INTERSECT_SHADOW}) {
-        const cl_uint i = stage_args(s);
-        kernels_[s].setArg(i, scene_.nodes);
-        kernels_[s].setArg(i + 1, scene_.triangles);
-        if (s == STAGE_INTERSECT_SHADOW) {
-            kernels_[s].setArg(i + 2, film_.layers);
-            kernels_[s].setArg(i + 3, film_.layer_compensation);
-        }
-    }
-    {
-        const cl_uint i = stage_args(STAGE_SHADE);
-        cl::Kernel& k = kernels_[STAGE_SHADE];
-        k.setArg(i, scene_.triangles);
-        k.setArg(i + 1, scene_.normals);
-        k.setArg(i + 2, scene_.materials);
-        k.setArg(i + 3, scene_.lights);
-        k.setArg(i + 4, film_.layers);
-        k.setArg(i + 5, film_.layer_compensation);
-    }
-    stage_args(STAGE_ROULETTE);
-    {
-        const cl_uint i = stage_args(STAGE_ACCUMULATE);
-        cl::Kernel& k = kernels_[STAGE_ACCUMULATE];
-        k.setArg(i, film_.sum);
-        k.setArg(i + 1, film_.compensation);
-        k.setArg(i + 2, film_.sum_squares);
-        k.setArg(i + 3, film_.squares_compensation);
-        k.setArg(i + 4, film_.samples);
-    }
+    auto shared_then = [this](Stage s) -> cl::Kernel& {
+        cl::Kernel& k = kernels_[s];
+        pool_.set_stage_args(k, params_);
+        return k;
+    };
+    const cl_uint own = PathPool::kSharedStageArgs;
+    set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
+    set_kernel_args(shared_then(STAGE_INTERSECT), own, scene_.nodes, scene_.triangles);
+    set_kernel_args(shared_then(STAGE_SHADE), own, scene_.triangles, scene_.normals, scene_.materials, scene_.lights,
+                    film_.layers, film_.layer_compensation);
+    set_kernel_args(shared_then(STAGE_INTERSECT_SHADOW), own, scene_.nodes, scene_.triangles, film_.layers,
+                    film_.layer_compensation);
+    shared_then(STAGE_ROULETTE);
+    set_kernel_args(shared_then(STAGE_ACCUMULATE), own, film_.sum, film_.compensation, film_.sum_squares,
+                    film_.squares_compensation, film_.samples);
 }
 
 cl::Event WavefrontScheduler::launch(Stage stage, uint32_t items) {
