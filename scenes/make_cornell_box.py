@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """make_cornell_box.py -- writes scenes/cornell-box.gltf: the Cornell box from
 its measured data (Cornell Program of Computer Graphics), in millimetres as
-measured, with its light, materials and the classic camera.
+measured, with its light, materials and the classic camera. With
+--small-light it writes scenes/cornell-box-small-light.gltf instead: the same
+box with the light quad shrunk about its centre to a tenth of its width and
+depth and its radiance raised 100 times, so it emits the same power from a
+hundredth of the area -- the hard case for sampling the light by the BSDF.
 
 It owns the winding of every triangle: the listed corner order of the measured
 quads is not trusted but checked against the side each face must face (walls
@@ -9,16 +13,19 @@ into the box, the light down, the blocks outward), and reversed where it
 disagrees. The output is one self-contained glTF 2.0 file (buffer embedded as
 a base64 data URI); running the script again reproduces it byte for byte.
 
-Usage: python3 scenes/make_cornell_box.py   (from any directory)
+Usage: python3 scenes/make_cornell_box.py [--small-light]   (from any directory)
 """
 
+import argparse
 import base64
 import json
 import math
 import os
 import struct
 
-OUTPUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "cornell-box.gltf")
+SCENES_DIR = os.path.dirname(os.path.abspath(__file__))
+# The light's side length relative to the measured one, as each output has it.
+FULL_LIGHT, SMALL_LIGHT = 1.0, 0.1
 
 # ---------------------------------------------------------------------------
 # Measured data (mm). x runs from the green wall (x = 0) to the red one,
@@ -109,17 +116,23 @@ def block(top):
     return triangles
 
 
-# (mesh name, material name, triangles)
-SURFACES = [
-    ("floor", "white", facing(FLOOR, UP)),
-    ("ceiling", "white", facing(CEILING, DOWN)),
-    ("back_wall", "white", facing(BACK_WALL, INTO_BOX_FROM_BACK)),
-    ("right_wall_green", "green", facing(RIGHT_WALL, INTO_BOX_FROM_GREEN)),
-    ("left_wall_red", "red", facing(LEFT_WALL, INTO_BOX_FROM_RED)),
-    ("light", "light", facing(LIGHT, DOWN)),
-    ("short_block", "white", block(SHORT_BLOCK_TOP)),
-    ("tall_block", "white", block(TALL_BLOCK_TOP)),
-]
+def scaled_about_centre(quad, scale):
+    middle = centroid(quad)
+    return [tuple(m + scale * (p - m) for p, m in zip(corner, middle)) for corner in quad]
+
+
+def surfaces(light_scale):
+    """(mesh name, material name, triangles) of every surface."""
+    return [
+        ("floor", "white", facing(FLOOR, UP)),
+        ("ceiling", "white", facing(CEILING, DOWN)),
+        ("back_wall", "white", facing(BACK_WALL, INTO_BOX_FROM_BACK)),
+        ("right_wall_green", "green", facing(RIGHT_WALL, INTO_BOX_FROM_GREEN)),
+        ("left_wall_red", "red", facing(LEFT_WALL, INTO_BOX_FROM_RED)),
+        ("light", "light", facing(scaled_about_centre(LIGHT, light_scale), DOWN)),
+        ("short_block", "white", block(SHORT_BLOCK_TOP)),
+        ("tall_block", "white", block(TALL_BLOCK_TOP)),
+    ]
 
 # ---------------------------------------------------------------------------
 # glTF
@@ -146,9 +159,11 @@ def material(name, albedo, emission=None):
     return entry
 
 
-def build_gltf():
+def build_gltf(light_scale, generator):
+    # Radiance over the area's factor keeps the emitted power of the measured light.
+    radiance = tuple(c / light_scale**2 for c in light_radiance())
     materials = [material("white", WHITE), material("red", RED), material("green", GREEN),
-                 material("light", LIGHT_ALBEDO, light_radiance())]
+                 material("light", LIGHT_ALBEDO, radiance)]
     material_index = {m["name"]: i for i, m in enumerate(materials)}
 
     blob = bytearray()
@@ -167,7 +182,7 @@ def build_gltf():
         accessors.append(accessor)
         return len(accessors) - 1
 
-    for name, material_name, triangles in SURFACES:
+    for name, material_name, triangles in surfaces(light_scale):
         # Three vertices per triangle, so each carries its triangle's flat normal.
         positions = [corner for triangle in triangles for corner in triangle]
         normals = [normalize(front_normal(t)) for t in triangles for _ in range(3)]
@@ -184,7 +199,7 @@ def build_gltf():
                   "rotation": [0.0, 1.0, 0.0, 0.0]})
 
     return {
-        "asset": {"version": "2.0", "generator": "scenes/make_cornell_box.py"},
+        "asset": {"version": "2.0", "generator": generator},
         "extensionsUsed": ["KHR_materials_emissive_strength"],
         "scene": 0,
         "scenes": [{"name": "cornell_box", "nodes": list(range(len(nodes)))}],
@@ -202,12 +217,20 @@ def build_gltf():
 
 
 def main():
-    gltf = build_gltf()
-    with open(OUTPUT, "w", encoding="ascii", newline="\n") as out:
-        json.dump(gltf, out, indent=1)
+    parser = argparse.ArgumentParser(description="Write the Cornell box as glTF.")
+    parser.add_argument("--small-light", action="store_true",
+                        help="write cornell-box-small-light.gltf: a light of 1/100 the area, 100 times as bright")
+    args = parser.parse_args()
+    name, light_scale, generator = "cornell-box.gltf", FULL_LIGHT, "scenes/make_cornell_box.py"
+    if args.small_light:
+        name, light_scale = "cornell-box-small-light.gltf", SMALL_LIGHT
+        generator += " --small-light"
+    output = os.path.join(SCENES_DIR, name)
+    with open(output, "w", encoding="ascii", newline="\n") as out:
+        json.dump(build_gltf(light_scale, generator), out, indent=1)
         out.write("\n")
-    triangles = sum(len(t) for _, _, t in SURFACES)
-    print(f"wrote {OUTPUT}: {triangles} triangles")
+    triangles = sum(len(t) for _, _, t in surfaces(light_scale))
+    print(f"wrote {output}: {triangles} triangles")
 
 
 if __name__ == "__main__":

@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ pkg-config pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libglm-dev
-          libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libgtest-dev python3)
+          libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libgtest-dev python3
+          python3-matplotlib python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
