@@ -157,6 +157,22 @@ TEST_F(Cli, StopsAtTheTimeBudgetOrTheTargetError) {
     EXPECT_LT(std::stod(final_row.substr(final_row.rfind(',') + 1)), 0.05) << errors;
 }
 
+TEST_F(Cli, ChecksInByTimeWithReportEvery) {
+    ASSERT_EQ(run("render " + kCornell + " --width 24 --height 24 --time 1.2 --report-every 0.3 --report " +
+                  path("every.csv") + " -o " + path("every.exr"))
+                  .exit_code,
+              0);
+    std::istringstream rows(test::read_file(path("every.csv")));
+    std::string row;
+    std::getline(rows, row); // header
+    std::vector<int> spp;
+    while (std::getline(rows, row)) spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
+    // The first round (1 spp) measures the rate; then about one row per 0.3 s.
+    EXPECT_GE(spp.size(), 3u);
+    EXPECT_LE(spp.size(), 8u);
+    EXPECT_TRUE(std::is_sorted(spp.begin(), spp.end()));
+}
+
 TEST_F(Cli, WritesBounceLayersToExr) {
     const std::string small = "render " + kCornell + " --width 16 --height 16 --spp 2 --aov bounces ";
     ASSERT_EQ(run(small + "-o " + path("layers.exr")).exit_code, 0);
