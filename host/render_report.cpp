@@ -38,6 +38,16 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << "schedule   " << st.iterations << " iterations; kernels " << std::setprecision(3) << kernel
         << " s, host and transfers " << st.seconds - kernel << " s (" << std::setprecision(1)
         << 100.0 * per_second(st.seconds - kernel, st.seconds) << "%)\n";
+    out << "path lengths";
+    for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
+        if (!st.path_lengths[b]) continue;
+        const uint64_t lo = b == 0 ? 0 : uint64_t{1} << (b - 1), hi = (uint64_t{1} << b) - 1;
+        out << "  " << lo;
+        if (b == WF_PATH_LENGTH_BUCKETS - 1) out << "+";
+        else if (hi > lo) out << "-" << hi;
+        out << ": " << std::setprecision(1) << 100.0 * per_second(st.path_lengths[b], st.samples) << "%";
+    }
+    out << " (bounces per sample)\n";
     out << "stage              launches     seconds   share\n";
     for (const StageTime& t : st.stages)
         out << "  " << std::left << std::setw(18) << t.name << std::right << std::setw(8) << t.launches

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <vector>
 
+#include "errors.h"
+
 namespace wf {
 namespace {
 
@@ -51,6 +53,9 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
     params_.hemisphere = settings.hemisphere;
     params_.sampler = settings.sampler;
     params_.bounce_layers = settings.bounce_layers;
+    if (settings.local_size < WF_PATH_LENGTH_BUCKETS)
+        throw InputError("local size " + std::to_string(settings.local_size) + " is below " +
+                         std::to_string(WF_PATH_LENGTH_BUCKETS) + ", the path-length histogram's buckets");
     for (int s = 0; s < STAGE_COUNT; ++s) kernels_[s] = cl::Kernel(program, kStageNames[s]);
     stats_.pool_size = pool_.size();
     stats_.pool_bytes = pool_.bytes();
@@ -130,6 +135,7 @@ void WavefrontScheduler::render_to(uint32_t spp) {
         stats_.shadow_rays += counters[WF_COUNTER_SHADOW_RAYS];
         stats_.nonfinite_samples += counters[WF_COUNTER_NONFINITE];
         stats_.samples += counters[WF_QUEUE_FINISHED];
+        for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) stats_.path_lengths[b] += counters[WF_COUNTER_PATH_LENGTHS + b];
         ++stats_.iterations;
         for (const auto& [stage, event] : events) {
             stats_.stages[stage].seconds += event_seconds(event);

@@ -32,7 +32,7 @@ struct RenderSettings {
     uint32_t seed = 0;
     uint32_t pool_size = 0; // 0: chosen from the image and the device
     uint32_t roulette_depth = 3;
-    uint32_t local_size = 64;
+    uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
     uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
     uint32_t hemisphere = WF_HEMISPHERE_COSINE;
     uint32_t sampler = WF_SAMPLER_INDEPENDENT;
@@ -57,6 +57,8 @@ struct RenderStats {
     uint32_t pool_size = 0;
     size_t pool_bytes = 0;
     std::array<StageTime, STAGE_COUNT> stages{};
+    // Finished paths by bounces: bucket 0 holds 0, bucket b ≥ 1 holds [2^(b−1), 2^b), the last open-ended.
+    std::array<uint64_t, WF_PATH_LENGTH_BUCKETS> path_lengths{};
     double kernel_seconds() const;
 };
 

@@ -20,6 +20,7 @@
 #include "error_metrics.h"
 #include "gltf_loader.h"
 #include "renderer.h"
+#include "statistics.h"
 #include "test_support.h"
 
 namespace wf {
@@ -52,26 +53,6 @@ const FilmReadout& cornell_reference() {
 
 constexpr uint32_t kBlock = 8;
 
-// The largest |z| over blocks and channels of (image − reference), each
-// block's variance the sum of both images' variances of the mean.
-double max_block_z(const FilmReadout& image, const FilmReadout& reference) {
-    const uint32_t block = kBlock;
-    double worst = 0.0;
-    for (uint32_t by = 0; by < kSide; by += block)
-        for (uint32_t bx = 0; bx < kSide; bx += block)
-            for (int c = 0; c < 3; ++c) {
-                double difference = 0.0, variance = 0.0;
-                for (uint32_t y = by; y < by + block; ++y)
-                    for (uint32_t x = bx; x < bx + block; ++x) {
-                        const size_t i = 3 * (size_t{y} * kSide + x) + c;
-                        difference += double(image.mean.rgb[i]) - reference.mean.rgb[i];
-                        variance += double(image.variance_of_mean.rgb[i]) + reference.variance_of_mean.rgb[i];
-                    }
-                if (variance > 0.0) worst = std::max(worst, std::fabs(difference) / std::sqrt(variance));
-            }
-    return worst;
-}
-
 struct Technique {
     uint32_t light_sampling, hemisphere, sampler;
 };
@@ -87,10 +68,8 @@ std::vector<Technique> every_technique() {
 TEST(Unbiasedness, EveryTechniqueConvergesToTheReference) {
     const std::vector<Technique> techniques = every_technique();
     const size_t comparisons = techniques.size() * (kSide / kBlock) * (kSide / kBlock) * 3;
-    // Two-sided Bonferroni threshold for a family-wise false-alarm rate of 1%:
-    // P(|Z| > 4.4) = 1.1e-5 < 0.01 / 576.
-    const double threshold = 4.4;
-    ASSERT_LT(std::erfc(threshold / std::sqrt(2.0)), 0.01 / comparisons);
+    // A family-wise false-alarm rate of 1% over 576 comparisons: |z| < 4.4.
+    const double threshold = test::bonferroni_threshold(0.01, comparisons);
     for (const Technique& t : techniques) {
         RenderSettings s;
         s.spp = 256;
@@ -98,7 +77,7 @@ TEST(Unbiasedness, EveryTechniqueConvergesToTheReference) {
         s.light_sampling = t.light_sampling;
         s.hemisphere = t.hemisphere;
         s.sampler = t.sampler;
-        const double z = max_block_z(render_cornell(s), cornell_reference());
+        const double z = test::max_block_z(render_cornell(s), cornell_reference(), kBlock);
         EXPECT_LT(z, threshold) << "light sampling " << t.light_sampling << ", hemisphere " << t.hemisphere
                                 << ", sampler " << t.sampler;
     }

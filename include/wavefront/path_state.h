@@ -61,7 +61,11 @@ typedef struct RenderParams {
 #define WF_COUNTER_CLOSEST_RAYS 5
 #define WF_COUNTER_SHADOW_RAYS 6
 #define WF_COUNTER_NONFINITE 7 /* samples dropped for a NaN or Inf component */
-#define WF_COUNTER_COUNT 8
+/* Finished paths by bounce count, in power-of-two buckets: 0, 1, 2–3, 4–7, ...,
+ * the last open-ended. */
+#define WF_COUNTER_PATH_LENGTHS 8
+#define WF_PATH_LENGTH_BUCKETS 16
+#define WF_COUNTER_COUNT (WF_COUNTER_PATH_LENGTHS + WF_PATH_LENGTH_BUCKETS)
 
 /* The path state: a structure of arrays, one array per field, each indexed by
  * path slot. Declared once here; the host allocates a buffer per field and the

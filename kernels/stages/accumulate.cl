@@ -5,7 +5,8 @@
  * atomics, and the same sums whatever the pool size. Beside the sum, the sum of
  * squares gives each pixel's sample variance, from which the host estimates
  * the error of the image without a reference. Both sums are compensated. A
- * sample with a NaN or Inf component is counted and dropped. */
+ * sample with a NaN or Inf component is counted and dropped, and every path is
+ * counted by its bounce count (the path-length histogram of the report). */
 #include "path_state.h"
 #include "common/finite.h"
 #include "common/film_add.h"
@@ -16,6 +17,7 @@ __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum, __global fl
                          __global uint* film_samples) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
+    __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_FINISHED, &slot);
     bool nonfinite = false;
@@ -29,5 +31,8 @@ __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum, __global fl
         film_samples[pixel] += 1u;
     }
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
+    const uint bounces = active ? path.depth[slot] : 0u;
+    const uint bucket = bounces == 0u ? 0u : min(32u - clz(bounces), (uint)WF_PATH_LENGTH_BUCKETS - 1u);
+    group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS, bucket, active, histogram);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_REGENERATE, slot, active, scratch);
 }
