@@ -164,9 +164,7 @@ TEST(ErrorEstimate, TracksTheTrueError) {
         EXPECT_LT(estimated / measured, 1.5) << "Cornell box at " << spp << " spp";
     }
     // The furnace: every pixel's true value is known exactly.
-    Scene furnace;
-    test::add_box_inward(furnace, glm::vec3(-1.0f), glm::vec3(1.0f),
-                         test::add_material(furnace, glm::vec3(0.7f), glm::vec3(1.0f), false));
+    const Scene furnace = test::furnace_box(0.7f, 1.0f);
     SceneCamera inside;
     inside.position = {0.2f, 0.1f, -0.3f};
     for (uint32_t spp : {64u, 256u}) {

@@ -10,8 +10,6 @@
 #include "bvh_builder.h"
 #include "device_scene.h"
 #include "geometry/bvh_traverse.h"
-#include "kernel_program.h"
-#include "path_pool.h"
 #include "test_support.h"
 
 namespace wf {
@@ -30,45 +28,18 @@ TEST(IntersectKernel, AgreesWithHostTraversal) {
     }
     const Bvh bvh = build_bvh(scene.positions);
     const DeviceSceneData data = make_device_scene_data(scene, bvh);
-    const OpenClDevice& device = test::cpu_device();
-    const DeviceScene uploaded = upload_scene(device.context, data);
-
     const uint32_t rays = 100000;
-    std::vector<cl_float4> origins(rays), directions(rays);
-    std::vector<cl_uint> queue(rays);
-    for (uint32_t i = 0; i < rays; ++i) {
-        const glm::vec3 o = 1.5f * glm::vec3(unit(rng), unit(rng), unit(rng));
-        const glm::vec3 d = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)));
-        origins[i] = {{o.x, o.y, o.z, 0.0f}};
-        directions[i] = {{d.x, d.y, d.z, 0.0f}};
-        queue[i] = i;
+    std::vector<test::TestRay> queue(rays);
+    for (test::TestRay& r : queue) {
+        r.origin = 1.5f * glm::vec3(unit(rng), unit(rng), unit(rng));
+        r.direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)));
     }
-    PathPool pool(device.context, rays);
-    RenderParams params{};
-    params.pool_size = rays;
-    std::vector<cl_uint> counters(WF_COUNTER_COUNT, 0u);
-    counters[WF_QUEUE_EXTEND] = rays;
-    const cl::CommandQueue& q = device.queue;
-    q.enqueueWriteBuffer(pool.field(PathField::ray_origin), CL_FALSE, 0, rays * sizeof(cl_float4), origins.data());
-    q.enqueueWriteBuffer(pool.field(PathField::ray_direction), CL_FALSE, 0, rays * sizeof(cl_float4), directions.data());
-    q.enqueueWriteBuffer(pool.queues, CL_FALSE, 0, rays * sizeof(cl_uint), queue.data());
-    q.enqueueWriteBuffer(pool.counters, CL_FALSE, 0, counters.size() * sizeof(cl_uint), counters.data());
-
-    const KernelProgram program = build_kernel_program(device, "wavefront.cl");
-    cl::Kernel intersect(program.program, "intersect");
-    const cl_uint next = pool.set_stage_args(intersect, params);
-    intersect.setArg(next, uploaded.nodes);
-    intersect.setArg(next + 1, uploaded.triangles);
-    // Rounded up to whole work-groups; the kernel stops at the queue length.
-    q.enqueueNDRangeKernel(intersect, cl::NullRange, cl::NDRange((rays + 63) / 64 * 64), cl::NDRange(64));
-    std::vector<cl_float4> hits(rays);
-    q.enqueueReadBuffer(pool.field(PathField::hit), CL_TRUE, 0, rays * sizeof(cl_float4), hits.data());
+    const std::vector<cl_float4> hits = test::intersect_on_device(data, queue);
 
     int hit_count = 0;
     for (uint32_t i = 0; i < rays; ++i) {
-        const glm::vec3 o(origins[i].s[0], origins[i].s[1], origins[i].s[2]);
-        const glm::vec3 d(directions[i].s[0], directions[i].s[1], directions[i].s[2]);
-        const wf_device::RayHit host = wf_device::bvh_closest_hit(data.nodes.data(), data.triangles.data(), o, d,
+        const wf_device::RayHit host = wf_device::bvh_closest_hit(data.nodes.data(), data.triangles.data(),
+                                                                  queue[i].origin, queue[i].direction,
                                                                   std::numeric_limits<float>::infinity());
         int32_t device_triangle;
         std::memcpy(&device_triangle, &hits[i].s[3], 4);

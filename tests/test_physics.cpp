@@ -20,28 +20,18 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-SceneCamera looking(glm::vec3 position, glm::vec3 forward, glm::vec3 up, float vertical_fov) {
-    SceneCamera c;
-    c.position = position;
-    c.forward = forward;
-    c.up = up;
-    c.vertical_fov = vertical_fov;
-    return c;
-}
 
 class Furnace : public ::testing::TestWithParam<float> {};
 
 TEST_P(Furnace, EveryPixelSeesEmissionOverOneMinusAlbedo) {
     const float albedo = GetParam();
     const float emission = 1.0f;
-    Scene scene;
-    test::add_box_inward(scene, glm::vec3(-1.0f), glm::vec3(1.0f),
-                   test::add_material(scene, glm::vec3(albedo), glm::vec3(emission), false));
+    const Scene scene = test::furnace_box(albedo, emission);
     RenderSettings settings;
     settings.spp = 64;
     settings.seed = 7;
     const RenderOutput out = render_scene(test::cpu_device(), scene,
-                                          looking(glm::vec3(0.1f, -0.2f, 0.3f), {0, 0, -1}, {0, 1, 0}, 1.2f),
+                                          test::camera_looking(glm::vec3(0.1f, -0.2f, 0.3f), {0, 0, -1}, {0, 1, 0}, 1.2f),
                                           ImageSize{48, 48}, settings);
     ASSERT_EQ(out.summary.stats.nonfinite_samples, 0u);
     ASSERT_EQ(out.summary.stats.samples, 48u * 48u * 64u);
@@ -90,7 +80,7 @@ TEST(Emission, LeavesTheFrontFaceUnlessDoubleSided) {
         settings.spp = 4;
         for (float side : {1.0f, -1.0f}) {
             const RenderOutput out = render_scene(
-                test::cpu_device(), scene, looking({0, 0, 3 * side}, {0, 0, -side}, {0, 1, 0}, 0.3f),
+                test::cpu_device(), scene, test::camera_looking({0, 0, 3 * side}, {0, 0, -side}, {0, 1, 0}, 0.3f),
                 ImageSize{8, 8}, settings);
             const bool lit = side > 0.0f || double_sided;
             EXPECT_FLOAT_EQ(out.film.mean.rgb[3 * (4 * 8 + 4) + 2], lit ? 4.0f : 0.0f)
@@ -157,7 +147,7 @@ TEST_P(NextEventEstimation, FloorUnderRectangleMatchesFormFactor) {
     settings.spp = 64;
     settings.max_depth = max_depth;
     const RenderOutput out = render_scene(test::cpu_device(), scene,
-                                          looking({0, 0.5f, 0}, {0, -1, 0}, {0, 0, 1}, float(kPi / 2)),
+                                          test::camera_looking({0, 0.5f, 0}, {0, -1, 0}, {0, 0, 1}, float(kPi / 2)),
                                           ImageSize{n, n}, settings);
     ASSERT_EQ(out.summary.stats.nonfinite_samples, 0u);
 

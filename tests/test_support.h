@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "device_scene.h"
 #include "film.h"
 #include "opencl_device.h"
 #include "scene.h"
@@ -26,6 +27,24 @@ void add_quad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, 
 // An axis-aligned box from lo to hi whose six faces face inward.
 void add_box_inward(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material);
 
+// Prints one line of what a test measured ("[ measured ] ..."), the figures
+// the README's tables quote.
+void report_measured(const std::string& line);
+
+// The furnace: the box [-1, 1]^3 whose inward walls all emit `emission` and
+// reflect `albedo`, where the radiance is emission / (1 - albedo) everywhere.
+Scene furnace_box(float albedo, float emission);
+
+// A ray for the device tests; the direction need not be unit.
+struct TestRay {
+    glm::vec3 origin;
+    glm::vec3 direction;
+};
+
+// The `intersect` stage kernel run over one queue holding `rays`, on
+// cpu_device(); the hits as it stores them: (t, u, v, triangle index bits).
+std::vector<cl_float4> intersect_on_device(const DeviceSceneData& data, const std::vector<TestRay>& rays);
+
 struct ChannelStats {
     double mean = 0.0;
     double stddev = 0.0; // of the pixel values about their mean
@@ -36,5 +55,46 @@ ChannelStats channel_stats(const Image& image, int channel);
 
 // The bytes of a file, for comparing two renders bit for bit.
 std::string read_file(const std::string& path);
+
+// ---------------------------------------------------------------------------
+// Added for test_stability.cpp.
+
+// A camera at `position` looking along `forward`; `up` need only not be
+// parallel to it (it is made orthogonal and unit here).
+SceneCamera camera_looking(glm::vec3 position, glm::vec3 forward, glm::vec3 up, float vertical_fov);
+
+// Appends the triangle a-b-c with the normal of its front face, or +z where it
+// has none (zero area), as the glTF loader does; returns its index.
+uint32_t add_triangle(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material);
+
+// The mean of one channel over all pixels and its standard error, from the
+// film's per-pixel variance of the mean (pixels are independent estimates):
+// SE² = Σ variance_of_mean / N².
+struct MeanWithError {
+    double mean = 0.0;
+    double standard_error = 0.0;
+};
+MeanWithError image_mean(const FilmReadout& film, int channel);
+
+// |difference| of two renders' image means of one channel over its standard
+// error, the two renders being independent.
+double image_mean_z(const FilmReadout& a, const FilmReadout& b, int channel);
+
+// Whether every value of an image is finite.
+bool all_finite(const Image& image);
+
+// Compiles OpenCL C `source` for cpu_device() with `options`; a failed build
+// throws std::runtime_error carrying the build log.
+cl::Program build_test_program(const std::string& source, const std::string& options = "");
+
+// A glTF file written for a test: one node per mesh (with a uniform scale),
+// each mesh one non-indexed triangle primitive whose float POSITIONs live in
+// one buffer embedded as a base64 data URI.
+struct GltfTestMesh {
+    std::string name;
+    std::vector<glm::vec3> positions; // three per triangle
+    double node_scale = 1.0;
+};
+void write_gltf(const std::string& path, const std::vector<GltfTestMesh>& meshes);
 
 } // namespace wf::test

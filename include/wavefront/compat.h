@@ -24,6 +24,7 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 
 #else /* host C++ */
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <glm/glm.hpp>
@@ -48,6 +49,8 @@ inline float3 max(float3 a, float3 b) { return float3(max(a.x, b.x), max(a.y, b.
 inline float3 fabs(float3 v) { return glm::abs(v); }
 using glm::cross;
 using glm::dot;
+using std::fabs; /* its float overload, beside the float3 one above */
+using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

@@ -2,12 +2,30 @@
  * built by host/bvh_builder.h, shared by the kernels and the host.
  *
  * Promises: bvh_closest_hit returns what testing every triangle with
- * intersect_triangle (geometry/triangle_intersect.h) would: the hit of least t
- * in (0, t_max), equal t going to the lower triangle index, so the answer does
- * not depend on the order in which nodes are visited. bvh_any_hit is 1 exactly
- * when that search would find a hit. Either way the direction need not be unit
- * (a shadow ray may be the whole segment with t_max = 1), but it must be finite
- * with a largest component above 2^-100.
+ * intersect_triangle (geometry/triangle_intersect.h) and passing each hit to
+ * select_hit would return, in any order: the answer does not depend on the
+ * order in which nodes are visited. bvh_any_hit is 1 exactly when that search
+ * would find a hit. Either way the direction need not be unit (a shadow ray
+ * may be the whole segment with t_max = 1), but it must be finite with a
+ * largest component above 2^-100.
+ *
+ * Which hit is returned (select_hit): the closest, at equal t the lower
+ * triangle index, except where rounding cannot tell an emitter from a surface
+ * in front of it. A hit's exact t lies within t_error of its t, so the t of
+ * two hits on one plane differ by at most the sum of their bounds. The window
+ * of doubt ends at the least t + 2 t_error over all hits, and the closest
+ * emitter hit (Triangle.light >= 0) inside it wins over the closest hit. So a
+ * light exactly coplanar with the surface it is set in is found wherever its
+ * bound is no larger than the surface's, and in practice everywhere, since the
+ * bounds are conservative several times over (tests/test_coplanar.cpp checks
+ * every pixel); the two no longer take turns from pixel to pixel as their
+ * roundings fall. The emitter wins, not the surface, because next-event
+ * estimation reaches it (its shadow segment stops short of that plane), and
+ * MIS weighs each light sample against the chance that BRDF sampling hits
+ * the same light: that direction must find the light, or light is lost.
+ * Every part of the rule is a least value or a comparison with one, so it is
+ * the same in any order, and the window's end can cull boxes: no node beyond
+ * it can change the answer.
  *
  * The box test must never cull a node holding a triangle that the triangle
  * test hits. Three things could make it do so, and each is answered:
@@ -79,19 +97,55 @@ WF_INLINE float box_entry(const BoxRay* ray, WF_GLOBAL const BvhNode* node, floa
     return entry <= exit ? entry : -1.0f;
 }
 
-/* The closest hit in (0, t_max), or the first one found when stop_at_first_hit
- * is set. A popped node is not tested again: it was culled against the closest
- * hit when pushed, and a closer hit since then still culls its children. */
+/* The hits met so far, as the rule above needs them. */
+typedef struct HitSelection {
+    RayHit closest;
+    RayHit emitter;   /* the closest emitter hit */
+    float window_end; /* least t + 2 t_error; t_max while there is none */
+} HitSelection;
+
+WF_INLINE HitSelection no_hits(float t_max) {
+    HitSelection s;
+    s.closest.t = t_max;
+    s.closest.u = 0.0f;
+    s.closest.v = 0.0f;
+    s.closest.triangle = -1;
+    s.emitter = s.closest;
+    s.window_end = t_max;
+    return s;
+}
+
+/* Whether a hit at t on triangle `index` comes before `than` (none yet: -1 at
+ * t_max, which every hit is below): least t, then lower index. */
+WF_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
+    return t < than->t || (t == than->t && index < than->triangle);
+}
+
+WF_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
+    RayHit h;
+    h.t = hit->t;
+    h.u = hit->u;
+    h.v = hit->v;
+    h.triangle = index;
+    if (comes_before(h.t, index, &s->closest)) s->closest = h;
+    if (emitter && comes_before(h.t, index, &s->emitter)) s->emitter = h;
+    s->window_end = min(s->window_end, hit->t + 2.0f * hit->t_error);
+}
+
+WF_INLINE RayHit selected_hit(const HitSelection* s) {
+    return s->emitter.triangle >= 0 && s->emitter.t <= s->window_end ? s->emitter : s->closest;
+}
+
+/* The selected hit in (0, t_max), or the first one found when
+ * stop_at_first_hit is set. A popped node is not tested again: it was culled
+ * against the window's end when pushed, and an earlier end since then still
+ * culls its children. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
                               float3 origin, float3 direction, float t_max, int stop_at_first_hit) {
     const WatertightRay ray = watertight_ray(origin, direction);
     const BoxRay box = box_ray(nodes, origin, direction);
-    RayHit hit;
-    hit.t = t_max;
-    hit.u = 0.0f;
-    hit.v = 0.0f;
-    hit.triangle = -1;
-    if (box_entry(&box, nodes, t_max) < 0.0f) return hit;
+    HitSelection selection = no_hits(t_max);
+    if (box_entry(&box, nodes, t_max) < 0.0f) return selected_hit(&selection);
 
     uint32_t stack[WF_BVH_STACK_SIZE];
     int stack_size = 0;
@@ -100,8 +154,8 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
         const uint32_t first = nodes[node].first;
         const uint32_t count = nodes[node].count;
         if (count == 0) {
-            const float entry_a = box_entry(&box, nodes + first, hit.t);
-            const float entry_b = box_entry(&box, nodes + first + 1, hit.t);
+            const float entry_a = box_entry(&box, nodes + first, selection.window_end);
+            const float entry_b = box_entry(&box, nodes + first + 1, selection.window_end);
             if (entry_a >= 0.0f && entry_b >= 0.0f) {
                 /* The nearer child first: a hit there may cull the other. */
                 const uint32_t nearer = entry_a <= entry_b ? first : first + 1;
@@ -119,17 +173,11 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
                 if (!intersect_triangle(&ray, load_float3(triangles[i].v0), load_float3(triangles[i].v1),
                                         load_float3(triangles[i].v2), t_max, &candidate))
                     continue;
-                /* At equal t the lower index wins, as in a search in index order. */
-                if (candidate.t < hit.t || (candidate.t == hit.t && (int32_t)i < hit.triangle)) {
-                    hit.t = candidate.t;
-                    hit.u = candidate.u;
-                    hit.v = candidate.v;
-                    hit.triangle = (int32_t)i;
-                    if (stop_at_first_hit) return hit;
-                }
+                select_hit(&selection, &candidate, (int32_t)i, triangles[i].light >= 0);
+                if (stop_at_first_hit) return selected_hit(&selection);
             }
         }
-        if (stack_size == 0) return hit;
+        if (stack_size == 0) return selected_hit(&selection);
         node = stack[--stack_size];
     }
 }

@@ -4,9 +4,15 @@
  *
  * Promises: a ray through an edge or a vertex shared by triangles of a closed
  * mesh hits at least one of them (no cracks), whatever the rounding. Both faces
- * count (no culling). A hit has t strictly inside (0, t_max) and barycentrics
- * u, v with p = (1 - u - v) v0 + u v1 + v v2. A zero-area triangle is hit only
- * by a ray that passes through it within rounding error.
+ * count (no culling). A hit comes with t, a bound t_error such that the exact
+ * t at which the ray meets the triangle's plane lies within t_error of t, and
+ * barycentrics u, v with p = (1 - u - v) v0 + u v1 + v v2. It is reported
+ * only when that exact t is surely inside (0, t_max): t - t_error > 0 and
+ * t + t_error < t_max. So a plane through or behind the origin is never hit,
+ * and a ray from a point offset by geometry/ray_offset.h does not find the
+ * surface it leaves; nor is a plane at or beyond t_max, and a shadow segment
+ * that ends just short of a light does not find the light. A zero-area
+ * triangle is hit only by a ray that passes through it within rounding error.
  * Precondition: the direction is finite and not zero; it need not be unit.
  *
  * How: each ray gets a transform that moves its origin to 0, permutes the axes
@@ -25,11 +31,38 @@
  * these functions (WF_FP_CONTRACT_OFF): every vertex must go through the same
  * roundings and shared edge functions must stay exact negatives. So the host
  * (GCC in ISO C++ mode does not contract either) and a device whose division
- * is correctly rounded, such as PoCL, compute the same bits. */
+ * is correctly rounded, such as PoCL, compute the same bits.
+ *
+ * The bound on t follows Pharr, Jakob and Humphreys (Physically Based
+ * Rendering, 4th ed., section 6.8), redone for this transform so that it
+ * does not grow with the distance to a triangle seen face-on. gamma_n is as in
+ * geometry/float_error.h; capitals are exact values, lower case computed ones.
+ *  - x = fl(a_kx - fl(s a_kz)), with a = fl(v - origin) and s = fl(d_kx / d_kz),
+ *    is within gamma_6 dot(|shear_x|, |a|) of X; y likewise. dx, dy: the
+ *    largest over the vertices, widened to gamma_8 for their own dot product.
+ *  - z = fl(fl(1 / d_kz) a_kz) is within gamma_3 |Z| <= gamma_4 |z|: dz = gamma_4 max|z|.
+ *  - e = fl(fl(px qy) - fl(py qx)) is within de = 2 (gamma_2 mx my + mx dy +
+ *    my dx + dx dy) of E, mx and my the largest |x| and |y|; the double
+ *    retest is closer still.
+ *  - The e of a hit share one sign, so sum|e| <= |det| (1 + gamma_2), and
+ *    det = fl(sum e) and N = fl(sum e z) round by gamma_2 and gamma_3.
+ * Writing sum E Z = T sum E and splitting e z - E Z, the exact T satisfies
+ *   N / det - T = (sum (e - E)(Z - T) + sum e (z - Z) + rounding of N
+ *                  - T rounding of det) / det,
+ * in which |Z - T| <= dz + w + |T - t|, w = max|z - t|. With t = fl(N fl(1 /
+ * det)) within gamma_3 |t| of N / det and q = 3 de / |det|, solving for
+ * |T - t| gives
+ *   t_error = (gamma_7 |t| + gamma_9 max|z| + q (w + dz)) / (1 - q - gamma_4),
+ * times 1 + gamma_12 for the dozen roundings of this sum itself. The spread w,
+ * not the distance max|z|, multiplies q, the large factor for small or
+ * distant triangles, so the bound stays a few ulps of t for a triangle seen
+ * face-on. Where q + gamma_4 >= 1 rounding may even have flipped det's sign:
+ * no bound, and no hit. */
 #ifndef WF_TRIANGLE_INTERSECT_H
 #define WF_TRIANGLE_INTERSECT_H
 
 #include "wavefront/compat.h"
+#include "geometry/float_error.h"
 
 /* Edge functions that round to 0 are redone in double wherever double exists. */
 #ifdef __OPENCL_C_VERSION__
@@ -61,8 +94,9 @@ typedef struct WatertightRay {
 
 typedef struct TriangleHit {
     float t;
-    float u; /* weight of v1 */
-    float v; /* weight of v2 */
+    float t_error; /* the exact t lies within t_error of t */
+    float u;       /* weight of v1 */
+    float v;       /* weight of v2 */
 } TriangleHit;
 
 WF_INLINE WatertightRay watertight_ray(float3 origin, float3 direction) {
@@ -107,7 +141,31 @@ WF_INLINE float edge_function_exact_sign(float px, float py, float qx, float qy)
 }
 #endif
 
-/* 1 and *hit filled when the ray hits the triangle at t in (0, t_max). */
+WF_INLINE float max_component(float3 v) { return max(max(v.x, v.y), v.z); }
+
+/* The bound t_error above, given the vertices relative to the origin (a, b,
+ * c), their transformed coordinates (one vertex per component), t and 1 / det
+ * of a hit; INFINITY where det's sign is in doubt. */
+WF_INLINE float t_error_bound(const WatertightRay* ray, float3 a, float3 b, float3 c, float3 x, float3 y, float3 z,
+                              float t, float inv_det) {
+    WF_FP_CONTRACT_OFF /* the same bits as the host, so both select the same hit */
+    const float3 shear_x = fabs(ray->shear_x), shear_y = fabs(ray->shear_y);
+    const float3 abs_a = fabs(a), abs_b = fabs(b), abs_c = fabs(c);
+    const float dx = rounding_gamma(8) * max(max(dot(shear_x, abs_a), dot(shear_x, abs_b)), dot(shear_x, abs_c));
+    const float dy = rounding_gamma(8) * max(max(dot(shear_y, abs_a), dot(shear_y, abs_b)), dot(shear_y, abs_c));
+    const float max_x = max_component(fabs(x)), max_y = max_component(fabs(y)), max_z = max_component(fabs(z));
+    const float spread = max_component(fabs(z - t));
+    const float dz = rounding_gamma(4) * max_z;
+    const float de = 2.0f * (rounding_gamma(2) * max_x * max_y + max_x * dy + max_y * dx + dx * dy);
+    const float q = 3.0f * de * fabs(inv_det);
+    const float denominator = 1.0f - q - rounding_gamma(4);
+    if (!(denominator > 0.0f)) return INFINITY;
+    return (rounding_gamma(7) * fabs(t) + rounding_gamma(9) * max_z + q * (spread + dz)) / denominator *
+           (1.0f + rounding_gamma(12));
+}
+
+/* 1 and *hit filled when the ray hits the triangle with its exact t surely in
+ * (0, t_max). */
 WF_INLINE int intersect_triangle(const WatertightRay* ray, float3 v0, float3 v1, float3 v2, float t_max,
                                  TriangleHit* hit) {
     WF_FP_CONTRACT_OFF
@@ -137,11 +195,19 @@ WF_INLINE int intersect_triangle(const WatertightRay* ray, float3 v0, float3 v1,
     const float det = e0 + e1 + e2;
     if (det == 0.0f) return 0;
 
-    const float scaled_t = e0 * dot(ray->scale_z, a) + e1 * dot(ray->scale_z, b) + e2 * dot(ray->scale_z, c);
+    const float az = dot(ray->scale_z, a), bz = dot(ray->scale_z, b), cz = dot(ray->scale_z, c);
+    const float scaled_t = e0 * az + e1 * bz + e2 * cz;
     const float inv_det = 1.0f / det;
     const float t = scaled_t * inv_det;
-    if (t <= 0.0f || t >= t_max) return 0;
+    if (!(t > 0.0f && t < t_max)) return 0; /* the bound below only narrows this */
+    /* Rounding can put t above 0 for a plane through or behind the origin, as
+     * for the surface a ray has just left, and below t_max for one at or
+     * beyond the end of a shadow segment. */
+    const float t_error = t_error_bound(ray, a, b, c, make_float3(ax, bx, cx), make_float3(ay, by, cy),
+                                        make_float3(az, bz, cz), t, inv_det);
+    if (!(t > t_error && t + t_error < t_max)) return 0;
     hit->t = t;
+    hit->t_error = t_error;
     hit->u = e1 * inv_det;
     hit->v = e2 * inv_det;
     return 1;

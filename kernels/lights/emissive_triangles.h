@@ -8,9 +8,11 @@
 
 #include "wavefront/scene_types.h"
 #include "common/sampling.h"
+#include "geometry/ray_offset.h"
 
 typedef struct LightSample {
     float3 point;
+    float3 point_error; /* per component, as geometry/ray_offset.h bounds it */
     float3 normal;    /* unit, of the emitting face toward the receiver */
     float3 radiance;  /* Le toward the receiver; zero when its back faces it */
     float pdf;        /* solid angle at the receiver; 0 when unusable */
@@ -37,7 +39,8 @@ inline LightSample sample_light(__global const LightEntry* lights, uint count,
     const __global Triangle* t = &triangles[entry.triangle];
     const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
     const float2 b = sample_triangle_uniform(u.yz);
-    s.point = (1.0f - b.x - b.y) * v0 + b.x * v1 + b.y * v2;
+    s.point = interpolate_triangle(v0, v1, v2, b.x, b.y);
+    s.point_error = interpolation_error(v0, v1, v2, b.x, b.y);
     const float3 cross_edges = cross(v1 - v0, v2 - v0);
     const float area = 0.5f * length(cross_edges);
     const float3 to_receiver = receiver - s.point;

@@ -10,11 +10,11 @@
 #include "path_state.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
-#include "common/ray_offset.h"
 #include "common/queue_push.h"
 #include "common/sample_values.h"
 #include "bsdf/lambert.h"
 #include "lights/emissive_triangles.h"
+#include "geometry/ray_offset.h"
 
 #define WF_SHADE_FINISHED 0u
 #define WF_SHADE_CONTINUES 1u
@@ -22,6 +22,7 @@
 
 typedef struct SurfaceHit {
     float3 position;
+    float3 position_error;   /* per component, as geometry/ray_offset.h bounds it */
     float3 geometric_normal; /* unit, on the side the ray arrived from */
     float3 shading_normal;   /* unit, on the same side as geometric_normal */
     bool front_face;         /* the ray arrived on the counter-clockwise side */
@@ -32,14 +33,16 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
                              float4 hit, float3 direction) {
     SurfaceHit s;
     const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
-    const float b0 = 1.0f - hit.y - hit.z;
-    /* From the corners, not origin + t·direction: exact to the triangle's own rounding. */
-    s.position = b0 * v0 + hit.y * v1 + hit.z * v2;
+    /* From the corners, not origin + t·direction: off the triangle by its own
+     * rounding alone, which position_error bounds. */
+    s.position = interpolate_triangle(v0, v1, v2, hit.y, hit.z);
+    s.position_error = interpolation_error(v0, v1, v2, hit.y, hit.z);
     const float3 cross_edges = cross(v1 - v0, v2 - v0);
     s.area = 0.5f * length(cross_edges);
     const float3 ng = cross_edges / (2.0f * s.area);
     s.front_face = dot(ng, direction) < 0.0f;
     s.geometric_normal = s.front_face ? ng : -ng;
+    const float b0 = 1.0f - hit.y - hit.z;
     const float3 ns = normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2));
     s.shading_normal = dot(ns, s.geometric_normal) < 0.0f ? -ns : ns;
     return s;
@@ -86,7 +89,9 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
 
     const float3 albedo = vload3(0, m->albedo);
     const float3 f = lambert_eval(albedo);
-    const float3 origin = offset_ray_origin(s.position, s.geometric_normal);
+    /* Both rays below leave on the side the ray arrived from: each is kept
+     * only where dot(geometric_normal, wi) > 0. */
+    const float3 origin = offset_ray_origin(s.position, s.position_error, s.geometric_normal, s.geometric_normal);
     uint outcome = WF_SHADE_FINISHED;
 
     /* Next-event estimation: one point on one emitter. */
@@ -101,9 +106,9 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                                      : 1.0f;
             const float3 contribution = throughput * f * ls.radiance * (cos_surface * weight / ls.pdf);
             if (is_finite3(contribution)) {
-                const float3 target = offset_ray_origin(ls.point, ls.normal);
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
-                path->shadow_segment[slot] = (float4)(target - origin, 0.0f);
+                path->shadow_segment[slot] =
+                    (float4)(segment_to_surface(origin, ls.point, ls.point_error, ls.normal), 0.0f);
                 /* w: the bounce layer the light joins if it arrives. */
                 path->shadow_radiance[slot] = (float4)(contribution, as_float(depth + 1u));
                 outcome |= WF_SHADE_SHADOW_RAY;
