@@ -606,7 +606,7 @@ private:
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail(where, "mesh " + std::to_string(node.mesh) + " does not exist");
-            instance(size_t(node.mesh), world);
+            instance(size_t(node.mesh), world, where);
         }
         if (node.camera >= 0) {
             if (size_t(node.camera) >= model_.cameras.size())
@@ -621,8 +621,9 @@ private:
     // Appends one instance of a mesh in world space. A mirroring transform
     // swaps two corners so counter-clockwise stays the front face; normals go
     // through the inverse transpose, and fall back to the geometric normal
-    // where the file has none or they do not survive the transform.
-    void instance(size_t mesh_index, const glm::dmat4& world) {
+    // where the file has none or they do not survive the transform. A
+    // transform that carries a finite vertex past float range is an error.
+    void instance(size_t mesh_index, const glm::dmat4& world, const std::string& node_where) {
         const MeshTriangles& mesh = mesh_triangles(mesh_index);
         const glm::dmat3 linear(world);
         const glm::dmat3 normal_matrix = glm::inverseTranspose(linear);
@@ -633,6 +634,12 @@ private:
             std::array<glm::dvec3, 3> p;
             for (size_t k = 0; k < 3; ++k)
                 p[k] = glm::dvec3(world * glm::dvec4(mesh.positions[3 * triangle + order[k]], 1.0));
+            for (size_t k = 0; k < 3; ++k)
+                if (const glm::vec3 stored(p[k]);
+                    glm::any(glm::isinf(stored)) || glm::any(glm::isnan(stored)))
+                    fail(node_where + ": " + label("mesh", mesh_index, model_.meshes[mesh_index].name),
+                         "vertex " + std::to_string(3 * triangle + order[k]) +
+                             " leaves float range after the node transform");
             // Degenerate triangles stay (later stages handle them) with any unit normal.
             const glm::dvec3 geometric =
                 direction_of(glm::cross(p[1] - p[0], p[2] - p[0])).value_or(glm::dvec3(0, 0, 1));

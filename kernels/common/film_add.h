@@ -1,16 +1,19 @@
-/* film_add.h — compensated addition into a film buffer (Neumaier's variant of
- * Kahan summation): sum + compensation carries the running total to about
- * twice float precision, so a million samples per pixel lose nothing to the
- * float accumulator. Deterministic, since each pixel has one writer adding its
- * samples in order (see stages/generate.cl). */
+/* film_add.h — compensated addition into a film buffer (Kahan–Babuška /
+ * Neumaier): the compensation holds what the last addition rounded away and is
+ * fed into the next one, so it stays as small as one rounding error. Carrying it
+ * separately without feeding it back fails for a constant signal: every
+ * rounding error has the same sign, the compensation grows and rounds itself.
+ * The film reads sum + compensation. Deterministic, since each pixel has one
+ * writer adding its samples in order (see stages/generate.cl). */
 #ifndef WF_FILM_ADD_H
 #define WF_FILM_ADD_H
 
 inline void film_add(__global float4* sum, __global float4* compensation, uint index, float4 x) {
     const float4 s = sum[index];
-    const float4 t = s + x;
-    const int4 sum_larger = isgreaterequal(fabs(s), fabs(x));
-    compensation[index] += select((x - t) + s, (s - t) + x, sum_larger);
+    const float4 y = x + compensation[index];
+    const float4 t = s + y;
+    const int4 sum_larger = isgreaterequal(fabs(s), fabs(y));
+    compensation[index] = select((y - t) + s, (s - t) + y, sum_larger);
     sum[index] = t;
 }
 

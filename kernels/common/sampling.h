@@ -53,11 +53,14 @@ inline float2 sample_triangle_uniform(float2 u) {
     return (float2)(1.0f - su, u.y * su);
 }
 
-/* Veach's power heuristic with beta = 2, for one sample from each technique. */
+/* Veach's power heuristic with beta = 2, for one sample from each technique.
+ * Written as 1 / (1 + (other/this)^2) so that a pdf whose square overflows (a
+ * light of area 1e-16 has a solid-angle pdf near 1e19) still gives the right
+ * limit instead of Inf/Inf = NaN. */
 inline float power_heuristic(float pdf_this, float pdf_other) {
-    const float a = pdf_this * pdf_this;
-    const float b = pdf_other * pdf_other;
-    return a / (a + b);
+    if (!(pdf_this > 0.0f)) return 0.0f;
+    const float ratio = pdf_other / pdf_this;
+    return 1.0f / (1.0f + ratio * ratio);
 }
 
 #endif
