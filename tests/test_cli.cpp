@@ -166,11 +166,21 @@ TEST_F(Cli, ChecksInByTimeWithReportEvery) {
     std::string row;
     std::getline(rows, row); // header
     std::vector<int> spp;
-    while (std::getline(rows, row)) spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
-    // The first round (1 spp) measures the rate; then about one row per 0.3 s.
+    std::vector<double> seconds;
+    while (std::getline(rows, row)) {
+        seconds.push_back(std::stod(row));
+        spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
+    }
+    // The first round (1 spp) measures the rate; then a round that starts with
+    // more than 0.3 s of the budget left lasts about 0.3 s, and those after it
+    // fill what is left. The rate is re-measured each round and another test
+    // may share the cores, so a round may run long or short by a factor of a
+    // few: the bounds say "by time", not how precisely.
     EXPECT_GE(spp.size(), 3u);
-    EXPECT_LE(spp.size(), 8u);
+    EXPECT_LE(spp.size(), 16u);
     EXPECT_TRUE(std::is_sorted(spp.begin(), spp.end()));
+    for (size_t i = 2; i < seconds.size() && seconds[i - 1] < 1.2 - 0.3; ++i)
+        EXPECT_GT(seconds[i] - seconds[i - 1], 0.3 / 4) << "row " << i;
 }
 
 TEST_F(Cli, WritesBounceLayersToExr) {
