@@ -73,7 +73,12 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     }
     for (const SceneMaterial& m : scene.materials) {
         Material dm{};
-        store3(dm.albedo, glm::clamp(m.albedo, 0.0f, 1.0f));
+        store3(dm.base_color, glm::clamp(m.base_color, 0.0f, 1.0f));
+        dm.metallic = m.metallic;
+        dm.roughness = m.roughness;
+        dm.transmission = m.transmission;
+        dm.ior = m.ior;
+        dm.specular = m.specular;
         store3(dm.emission, m.emission);
         dm.flags = m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
         d.materials.push_back(dm);

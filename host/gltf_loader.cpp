@@ -147,7 +147,8 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
 // Extensions and materials
 
 const std::set<std::string>& supported_extensions() {
-    static const std::set<std::string> names = {"KHR_materials_emissive_strength"};
+    static const std::set<std::string> names = {"KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                "KHR_materials_specular", "KHR_materials_transmission"};
     return names;
 }
 
@@ -162,6 +163,22 @@ void check_extensions(const Model& model, const std::string& path,
     if (!ignored.empty()) warnings.push_back("extensions not supported, ignored: " + ignored);
 }
 
+// Core glTF features that are read past, each said once: the scene renders
+// in its bind pose with no morph weights applied.
+void check_core_features(const Model& model, std::vector<std::string>& warnings) {
+    if (!model.skins.empty())
+        warnings.push_back(std::to_string(model.skins.size()) + " skin(s) not supported, rendered in the bind pose");
+    size_t morphed = 0;
+    for (const tinygltf::Mesh& mesh : model.meshes)
+        for (const tinygltf::Primitive& primitive : mesh.primitives) morphed += !primitive.targets.empty();
+    if (morphed)
+        warnings.push_back("morph targets not supported on " + std::to_string(morphed) +
+                           " primitive(s), rendered without them");
+    if (!model.animations.empty())
+        warnings.push_back(std::to_string(model.animations.size()) +
+                           " animation(s) not supported, rendered at rest");
+}
+
 bool uses_texture(const tinygltf::Material& material) {
     return material.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
            material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ||
@@ -174,37 +191,61 @@ double element_or(const std::vector<double>& values, size_t i, double fallback) 
     return i < values.size() ? values[i] : fallback;
 }
 
-double emissive_strength(const tinygltf::Material& material) {
-    const auto extension = material.extensions.find("KHR_materials_emissive_strength");
-    if (extension == material.extensions.end() || !extension->second.Has("emissiveStrength"))
-        return 1.0;
-    const tinygltf::Value& strength = extension->second.Get("emissiveStrength");
-    return strength.IsNumber() ? strength.GetNumberAsDouble() : 1.0;
+// A number from a material extension's object, or `fallback` where the
+// extension or the property is absent.
+double extension_number(const tinygltf::Material& material, const char* extension_name,
+                        const char* property, double fallback) {
+    const auto extension = material.extensions.find(extension_name);
+    if (extension == material.extensions.end() || !extension->second.Has(property)) return fallback;
+    const tinygltf::Value& value = extension->second.Get(property);
+    return value.IsNumber() ? value.GetNumberAsDouble() : fallback;
+}
+
+// A factor that glTF defines on [0, 1]: NaN is an error, the rest is clamped.
+float unit_factor(double value, const std::string& where, const char* what) {
+    if (std::isnan(value)) fail(where, std::string(what) + " is NaN");
+    return float(std::clamp(value, 0.0, 1.0));
 }
 
 SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
                                const std::string& path) {
+    const std::string where = path + ": " + label("material", index, material.name);
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     SceneMaterial converted;
     converted.name = material.name;
     converted.double_sided = material.doubleSided;
-    const std::vector<double>& base_color = material.pbrMetallicRoughness.baseColorFactor;
-    const double strength = emissive_strength(material);
+    converted.metallic = unit_factor(pbr.metallicFactor, where, "metallicFactor");
+    converted.roughness = unit_factor(pbr.roughnessFactor, where, "roughnessFactor");
+    converted.transmission = unit_factor(
+        extension_number(material, "KHR_materials_transmission", "transmissionFactor", 0.0), where,
+        "transmissionFactor");
+    converted.specular = unit_factor(
+        extension_number(material, "KHR_materials_specular", "specularFactor", 1.0), where, "specularFactor");
+    // KHR_materials_ior allows 0 as "a perfect absorber"; that, and anything below 1, is not supported.
+    const double ior = extension_number(material, "KHR_materials_ior", "ior", 1.5);
+    if (!(ior >= 1.0 && ior < 1e3)) fail(where, "ior " + std::to_string(ior) + " is not in [1, 1000)");
+    converted.ior = float(ior);
+    const double strength = extension_number(material, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
     for (int c = 0; c < 3; ++c) {
-        converted.albedo[c] = float(std::clamp(element_or(base_color, size_t(c), 1.0), 0.0, 1.0));
+        converted.base_color[c] = unit_factor(element_or(pbr.baseColorFactor, size_t(c), 1.0), where,
+                                              "baseColorFactor");
         const double emission = element_or(material.emissiveFactor, size_t(c), 0.0) * strength;
         if (!std::isfinite(emission) || emission < 0.0)
-            fail(path, label("material", index, material.name) +
-                           ": emission must be finite and non-negative");
+            fail(where, "emission must be finite and non-negative");
         converted.emission[c] = float(emission);
     }
     return converted;
 }
 
-// glTF's defaults for a primitive without a material: white, not emissive.
+// glTF's defaults for a primitive without a material: white, metallic 1,
+// roughness 1 (glTF 2.0, section 3.9.6), not emissive.
 SceneMaterial default_material() {
     SceneMaterial material;
     material.name = "default";
-    material.albedo = glm::vec3(1.0f);
+    material.base_color = glm::vec3(1.0f);
+    material.metallic = 1.0f;
+    material.roughness = 1.0f;
+    material.specular = 1.0f;
     return material;
 }
 
@@ -535,6 +576,7 @@ public:
 
     Scene build(const LoadOptions& options) {
         check_extensions(model_, path_, scene_.warnings);
+        check_core_features(model_, scene_.warnings);
         convert_materials();
         std::vector<bool> on_path(model_.nodes.size(), false);
         for (int root : root_nodes()) visit(root, glm::dmat4(1.0), on_path);

@@ -14,11 +14,19 @@
 
 namespace wf {
 
+// glTF 2.0 metallic-roughness with KHR_materials_transmission, _ior and
+// _specular. The defaults here are a plain Lambertian surface (specular 0),
+// what scenes built in code mean; the glTF loader sets glTF's own defaults.
 struct SceneMaterial {
     std::string name;
-    glm::vec3 albedo{0.8f};   // Lambertian reflectance in [0, 1]
-    glm::vec3 emission{0.0f}; // radiance Le (W sr^-1 m^-2), emitted by the front face
-    bool double_sided = false; // emits from both faces
+    glm::vec3 base_color{0.8f}; // linear, in [0, 1]
+    float metallic = 0.0f;
+    float roughness = 1.0f;     // perceptual; GGX alpha = roughness^2
+    float transmission = 0.0f;
+    float ior = 1.5f;
+    float specular = 0.0f;      // 0: no specular lobe at all
+    glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
+    bool double_sided = false;  // one-sided surfaces emit from the front face only
 };
 
 struct SceneCamera {

@@ -22,7 +22,7 @@ const OpenClDevice& cpu_device() {
 uint32_t add_material(Scene& scene, glm::vec3 albedo, glm::vec3 emission, bool double_sided) {
     SceneMaterial m;
     m.name = "material " + std::to_string(scene.materials.size());
-    m.albedo = albedo;
+    m.base_color = albedo;
     m.emission = emission;
     m.double_sided = double_sided;
     scene.materials.push_back(m);

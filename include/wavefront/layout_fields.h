@@ -13,7 +13,8 @@
     X(Triangle, v0) X(Triangle, material) X(Triangle, v1) X(Triangle, light) X(Triangle, v2)      \
     X(Triangle, mesh)                                                                             \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
-    X(Material, albedo) X(Material, flags) X(Material, emission)                                  \
+    X(Material, base_color) X(Material, flags) X(Material, emission) X(Material, metallic)       \
+    X(Material, roughness) X(Material, transmission) X(Material, ior) X(Material, specular)        \
     X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, triangle) X(LightEntry, pmf)    \
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \
     X(Camera, width) X(Camera, forward) X(Camera, height)                                         \

@@ -42,11 +42,17 @@ typedef struct TriangleNormals {
 
 #define WF_MATERIAL_DOUBLE_SIDED 1u
 
+/* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior and
+ * _specular; kernels/bsdf/ says what each factor does to the BSDF. */
 typedef struct Material {
-    float albedo[3];   /* Lambertian reflectance */
-    uint32_t flags;    /* WF_MATERIAL_* */
-    float emission[3]; /* radiance Le, W sr^-1 m^-2, from the front face */
-    float pad;
+    float base_color[3]; /* linear, in [0, 1] */
+    uint32_t flags;      /* WF_MATERIAL_* */
+    float emission[3];   /* radiance Le, W sr^-1 m^-2, from the front face */
+    float metallic;      /* in [0, 1] */
+    float roughness;     /* perceptual, in [0, 1]; GGX alpha = roughness^2 */
+    float transmission;  /* in [0, 1] */
+    float ior;           /* index of refraction inside, >= 1 */
+    float specular;      /* in [0, 1]; 0 leaves a plain Lambertian surface */
 } Material;
 
 /* One entry of the alias table over emissive triangles, chosen by power. */

@@ -87,7 +87,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
-    const float3 albedo = vload3(0, m->albedo);
+    const float3 albedo = vload3(0, m->base_color);
     const float3 f = lambert_eval(albedo);
     /* Both rays below leave on the side the ray arrived from: each is kept
      * only where dot(geometric_normal, wi) > 0. */
