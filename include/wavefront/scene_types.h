@@ -69,4 +69,20 @@ typedef struct Camera {
     uint32_t height;
 } Camera;
 
+#define WF_ENVIRONMENT_CONSTANT 1u /* the same radiance, `scale`, from every direction */
+
+/* Light from infinitely far away (kernels/lights/environment.h). A map of
+ * width x height equirectangular texels, or with WF_ENVIRONMENT_CONSTANT a
+ * constant radiance and no texels. Its two buffers (host/environment_map.h):
+ * texels, four floats per texel (RGB radiance before `scale`, then the
+ * sampling density in solid angle), and the sampling distribution's CDFs. */
+typedef struct Environment {
+    float scale[3];     /* multiplies every texel; the radiance itself when constant */
+    uint32_t flags;     /* WF_ENVIRONMENT_* */
+    float cos_rotation; /* the map is turned about +y: world = R_y(rotation) map */
+    float sin_rotation;
+    uint32_t width;
+    uint32_t height;
+} Environment;
+
 #endif /* WAVEFRONT_SCENE_TYPES_H */
