@@ -7,7 +7,7 @@
 
 #define WF_LAYOUT_STRUCTS(X) \
     X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
-    X(Environment)
+    X(Environment) X(PunctualLight)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
@@ -23,6 +23,9 @@
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
     X(RenderParams, sampler) X(RenderParams, bounce_layers)                                       \
     X(Environment, scale) X(Environment, flags) X(Environment, cos_rotation)                      \
-    X(Environment, sin_rotation) X(Environment, width) X(Environment, height)
+    X(Environment, sin_rotation) X(Environment, width) X(Environment, height)                     \
+    X(PunctualLight, position) X(PunctualLight, type) X(PunctualLight, direction)                 \
+    X(PunctualLight, range) X(PunctualLight, intensity) X(PunctualLight, cos_outer)               \
+    X(PunctualLight, cos_inner)
 
 #endif /* WAVEFRONT_LAYOUT_FIELDS_H */

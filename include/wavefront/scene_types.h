@@ -85,4 +85,22 @@ typedef struct Environment {
     uint32_t height;
 } Environment;
 
+#define WF_PUNCTUAL_POINT 0u
+#define WF_PUNCTUAL_SPOT 1u
+#define WF_PUNCTUAL_DIRECTIONAL 2u
+
+/* A glTF KHR_lights_punctual light (kernels/lights/punctual.h), a delta light.
+ * glTF's photometric numbers are taken as radiometric ones: 1 cd as 1 W/sr
+ * (point, spot), 1 lux as 1 W/m^2 (directional). */
+typedef struct PunctualLight {
+    float position[3];  /* world space; unused by a directional light */
+    uint32_t type;      /* WF_PUNCTUAL_* */
+    float direction[3]; /* unit: where a spot points, where directional light travels */
+    float range;        /* glTF's range, 0 = unbounded; kept, not applied */
+    float intensity[3]; /* colour x intensity: W/sr, or W/m^2 when directional */
+    float cos_outer;    /* spot cone: cos of glTF's outerConeAngle */
+    float cos_inner;    /* and of its innerConeAngle */
+    float pad[3];
+} PunctualLight;
+
 #endif /* WAVEFRONT_SCENE_TYPES_H */
