@@ -12,6 +12,7 @@
 
 #include "errors.h"
 #include "gltf_lights.h"
+#include "kernel_sources.h"
 #include "lights/punctual.h"
 #include "test_support.h"
 
@@ -150,6 +151,53 @@ TEST(PunctualLights, BadLightIndexNamesFileAndNode) {
         ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(), "lights.gltf: node 2 'c': KHR_lights_punctual light 7 does not exist");
+    }
+}
+
+const char* kPunctualKernel = R"(
+__kernel void punctual_test(__global const PunctualLight* lights, __global const float* receivers,
+                            __global float* out) {
+    const uint i = get_global_id(0);
+    const PunctualSample s = punctual_sample(lights[i % 3], vload3(i, receivers));
+    __global float* o = out + 7 * i;
+    o[0] = s.direction.x; o[1] = s.direction.y; o[2] = s.direction.z; o[3] = s.distance;
+    o[4] = s.Li.x; o[5] = s.Li.y; o[6] = s.Li.z;
+}
+)";
+
+// The device compiles the same header and agrees with the host.
+TEST(PunctualLights, DeviceAgreesWithHost) {
+    const OpenClDevice& device = test::cpu_device();
+    const cl::Program program = test::build_test_program(expand_kernel_source("lights/punctual.h") + kPunctualKernel);
+    std::vector<PunctualLight> lights = {light(WF_PUNCTUAL_POINT, glm::vec3(0, 2, 0), glm::vec3(0, -1, 0), 4.0f),
+                                         light(WF_PUNCTUAL_SPOT, glm::vec3(1, 3, 0), glm::vec3(0, -1, 0), 2.0f),
+                                         light(WF_PUNCTUAL_DIRECTIONAL, glm::vec3(0), glm::vec3(0, -0.6f, 0.8f), 1.0f)};
+    lights[1].cos_inner = 0.95f;
+    lights[1].cos_outer = 0.8f;
+    const size_t n = 300;
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+    std::vector<float> receivers(3 * n);
+    for (size_t i = 0; i < n; ++i) receivers[3 * i] = u(rng), receivers[3 * i + 1] = 0.0f, receivers[3 * i + 2] = u(rng);
+    cl::Buffer lb(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lights.size() * sizeof(PunctualLight), lights.data());
+    cl::Buffer rb(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, receivers.size() * sizeof(float), receivers.data());
+    cl::Buffer out(device.context, CL_MEM_WRITE_ONLY, 7 * n * sizeof(float));
+    cl::Kernel kernel(program, "punctual_test");
+    kernel.setArg(0, lb);
+    kernel.setArg(1, rb);
+    kernel.setArg(2, out);
+    device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(n));
+    std::vector<float> o(7 * n);
+    device.queue.enqueueReadBuffer(out, CL_TRUE, 0, o.size() * sizeof(float), o.data());
+    for (size_t i = 0; i < n; ++i) {
+        const auto h = wf_device::punctual_sample(lights[i % 3], glm::vec3(receivers[3 * i], 0.0f, receivers[3 * i + 2]));
+        const float* g = &o[7 * i];
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(g[k], h.direction[k], 1e-6f) << i;
+            EXPECT_NEAR(g[4 + k], h.Li[k], 1e-5f * (1.0f + h.Li[k])) << i;
+        }
+        EXPECT_EQ(std::isinf(g[3]), std::isinf(h.distance)) << i;
+        if (!std::isinf(h.distance)) EXPECT_NEAR(g[3], h.distance, 1e-5f) << i;
     }
 }
 
