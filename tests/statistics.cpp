@@ -35,4 +35,54 @@ double bonferroni_threshold(double alpha, size_t comparisons) {
     return hi;
 }
 
+double regularized_gamma_q(double a, double x) {
+    if (x <= 0.0) return 1.0;
+    const double log_prefactor = a * std::log(x) - x - std::lgamma(a);
+    if (x < a + 1.0) { // P by its series, Q = 1 - P
+        double term = 1.0 / a, sum = term;
+        for (int n = 1; n < 1000 && std::fabs(term) > 1e-16 * std::fabs(sum); ++n) {
+            term *= x / (a + n);
+            sum += term;
+        }
+        return std::max(0.0, 1.0 - sum * std::exp(log_prefactor));
+    }
+    const double tiny = 1e-300; // Q by its continued fraction (modified Lentz)
+    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+    for (int n = 1; n < 1000; ++n) {
+        const double an = -n * (n - a);
+        b += 2.0;
+        d = an * d + b;
+        d = std::fabs(d) < tiny ? tiny : d;
+        c = b + an / c;
+        c = std::fabs(c) < tiny ? tiny : c;
+        d = 1.0 / d;
+        const double delta = d * c;
+        h *= delta;
+        if (std::fabs(delta - 1.0) < 1e-16) break;
+    }
+    return std::exp(log_prefactor) * h;
+}
+
+double chi_square_p_value(const std::vector<double>& observed, const std::vector<double>& expected,
+                          double min_expected) {
+    double chi2 = 0.0, pooled_observed = 0.0, pooled_expected = 0.0;
+    size_t cells = 0;
+    for (size_t i = 0; i < observed.size(); ++i) {
+        if (expected[i] <= 0.0 && observed[i] > 0.0) return 0.0;
+        if (expected[i] < min_expected) {
+            pooled_observed += observed[i];
+            pooled_expected += expected[i];
+        } else {
+            chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+            ++cells;
+        }
+    }
+    if (pooled_expected >= min_expected) {
+        chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+        ++cells;
+    }
+    if (cells < 2) return 1.0;
+    return regularized_gamma_q(0.5 * double(cells - 1), 0.5 * chi2);
+}
+
 } // namespace wf::test

@@ -3,7 +3,8 @@
  * and WF_DEVICE_END.
  *
  * Shared code is written against this vocabulary: fixed-width integers, float3
- * with dot/cross/min/max, make_float3, float4 with make_float4, as_uint/as_float,
+ * with dot/cross/min/max, make_float3, float4 with make_float4, float2 with
+ * make_float2, scalar clamp/sqrt/sin/cos/acos/atan2/floor, as_uint/as_float,
  * and WF_GLOBAL for the address space of scene buffers. On the device these are
  * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
  * else belongs here. */
@@ -18,6 +19,7 @@ typedef int int32_t;
 #define WF_INLINE inline
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
+#define make_float2(x, y) ((float2)((x), (y)))
 #define WF_DEVICE_BEGIN
 #define WF_DEVICE_END
 WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
@@ -51,6 +53,17 @@ using glm::cross;
 using glm::dot;
 using std::fabs; /* its float overload, beside the float3 one above */
 using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
+/* float2, and the float overloads of the math built-ins that the lights use
+ * (never the double ones that unqualified calls could otherwise find). */
+using float2 = glm::vec2;
+inline float2 make_float2(float x, float y) { return float2(x, y); }
+inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); }
+using std::acos;
+using std::atan2;
+using std::cos;
+using std::floor;
+using std::sin;
+using std::sqrt;
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

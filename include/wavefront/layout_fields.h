@@ -6,7 +6,8 @@
 #define WAVEFRONT_LAYOUT_FIELDS_H
 
 #define WF_LAYOUT_STRUCTS(X) \
-    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams)
+    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
+    X(Environment) X(PunctualLight)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
@@ -21,6 +22,11 @@
     X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
-    X(RenderParams, sampler) X(RenderParams, bounce_layers)
+    X(RenderParams, sampler) X(RenderParams, bounce_layers)                                       \
+    X(Environment, scale) X(Environment, flags) X(Environment, cos_rotation)                      \
+    X(Environment, sin_rotation) X(Environment, width) X(Environment, height)                     \
+    X(PunctualLight, position) X(PunctualLight, type) X(PunctualLight, direction)                 \
+    X(PunctualLight, range) X(PunctualLight, intensity) X(PunctualLight, cos_outer)               \
+    X(PunctualLight, cos_inner)
 
 #endif /* WAVEFRONT_LAYOUT_FIELDS_H */

@@ -75,4 +75,38 @@ typedef struct Camera {
     uint32_t height;
 } Camera;
 
+#define WF_ENVIRONMENT_CONSTANT 1u /* the same radiance, `scale`, from every direction */
+
+/* Light from infinitely far away (kernels/lights/environment.h). A map of
+ * width x height equirectangular texels, or with WF_ENVIRONMENT_CONSTANT a
+ * constant radiance and no texels. Its two buffers (host/environment_map.h):
+ * texels, four floats per texel (RGB radiance before `scale`, then the
+ * sampling density in solid angle), and the sampling distribution's CDFs. */
+typedef struct Environment {
+    float scale[3];     /* multiplies every texel; the radiance itself when constant */
+    uint32_t flags;     /* WF_ENVIRONMENT_* */
+    float cos_rotation; /* the map is turned about +y: world = R_y(rotation) map */
+    float sin_rotation;
+    uint32_t width;
+    uint32_t height;
+} Environment;
+
+#define WF_PUNCTUAL_POINT 0u
+#define WF_PUNCTUAL_SPOT 1u
+#define WF_PUNCTUAL_DIRECTIONAL 2u
+
+/* A glTF KHR_lights_punctual light (kernels/lights/punctual.h), a delta light.
+ * glTF's photometric numbers are taken as radiometric ones: 1 cd as 1 W/sr
+ * (point, spot), 1 lux as 1 W/m^2 (directional). */
+typedef struct PunctualLight {
+    float position[3];  /* world space; unused by a directional light */
+    uint32_t type;      /* WF_PUNCTUAL_* */
+    float direction[3]; /* unit: where a spot points, where directional light travels */
+    float range;        /* glTF's range, 0 = unbounded; kept, not applied */
+    float intensity[3]; /* colour x intensity: W/sr, or W/m^2 when directional */
+    float cos_outer;    /* spot cone: cos of glTF's outerConeAngle */
+    float cos_inner;    /* and of its innerConeAngle */
+    float pad[3];
+} PunctualLight;
+
 #endif /* WAVEFRONT_SCENE_TYPES_H */
