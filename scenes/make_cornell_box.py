@@ -6,6 +6,12 @@ measured, with its light, materials and the classic camera. With
 box with the light quad shrunk about its centre to a tenth of its width and
 depth and its radiance raised 100 times, so it emits the same power from a
 hundredth of the area -- the hard case for sampling the light by the BSDF.
+With --mirror it writes scenes/cornell-mirror.gltf: the tall block a perfect
+mirror (white base colour, metallic 1, roughness 0). With --glass it writes
+scenes/cornell-glass.gltf: the blocks removed and a glass sphere on the floor
+(transmission 1, ior 1.5, roughness 0, white; KHR_materials_transmission and
+KHR_materials_ior), an icosphere of 4 subdivisions (5120 triangles) with
+smooth normals, radius 110 mm, its lowest vertex 0.1 mm above the floor.
 
 It owns the winding of every triangle: the listed corner order of the measured
 quads is not trusted but checked against the side each face must face (walls
@@ -13,15 +19,19 @@ into the box, the light down, the blocks outward), and reversed where it
 disagrees. The output is one self-contained glTF 2.0 file (buffer embedded as
 a base64 data URI); running the script again reproduces it byte for byte.
 
-Usage: python3 scenes/make_cornell_box.py [--small-light]   (from any directory)
+The glTF writing (buffer packing, accessors and bounds, materials, camera,
+the checks every file passes before it is written) is scenes/gltf_writer.py's;
+scenes/make_teapot.py reuses the box from here.
+
+Usage: python3 scenes/make_cornell_box.py [--small-light | --mirror | --glass]
+(from any directory)
 """
 
 import argparse
-import base64
-import json
 import math
 import os
-import struct
+
+from gltf_writer import Builder, centroid, facing, icosphere, material, sub, write
 
 SCENES_DIR = os.path.dirname(os.path.abspath(__file__))
 # The light's side length relative to the measured one, as each output has it.
@@ -46,6 +56,17 @@ RED = (0.63, 0.065, 0.05)
 GREEN = (0.14, 0.45, 0.091)
 LIGHT_ALBEDO = (0.78, 0.78, 0.78)
 
+# The variants' materials: a perfect mirror, and clear glass.
+MIRROR = material("mirror", (1.0, 1.0, 1.0), metallic=1.0, roughness=0.0)
+GLASS = material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, transmission=1.0, ior=1.5)
+
+# The glass sphere: centred over the floor's middle, a little toward the
+# camera; its lowest vertex 0.1 mm above the floor, so the two never touch.
+GLASS_SPHERE_RADIUS = 110.0
+GLASS_SPHERE_CENTRE_XZ = (278.0, 250.0)
+GLASS_SPHERE_GAP = 0.1
+GLASS_SPHERE_SUBDIVISIONS = 4
+
 
 def light_radiance():
     """The measured emission spectrum folded into RGB."""
@@ -65,45 +86,6 @@ INTO_BOX_FROM_BACK, INTO_BOX_FROM_GREEN, INTO_BOX_FROM_RED = (0, 0, -1), (1, 0, 
 # Geometry
 
 
-def sub(a, b):
-    return tuple(x - y for x, y in zip(a, b))
-
-
-def dot(a, b):
-    return sum(x * y for x, y in zip(a, b))
-
-
-def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def normalize(v):
-    length = math.sqrt(dot(v, v))
-    return tuple(x / length for x in v)
-
-
-def centroid(points):
-    return tuple(sum(p[c] for p in points) / len(points) for c in range(3))
-
-
-def front_normal(triangle):
-    """Unnormalized normal of the counter-clockwise (front) side."""
-    a, b, c = triangle
-    return cross(sub(b, a), sub(c, a))
-
-
-def facing(quad, toward):
-    """Quad a-b-c-d as triangles (a,b,c), (a,c,d) whose front faces lie along
-    `toward`; the corner order is reversed where the listed one faces away."""
-    if dot(front_normal(quad[:3]), toward) < 0:
-        quad = quad[::-1]
-    a, b, c, d = quad
-    triangles = [(a, b, c), (a, c, d)]
-    for triangle in triangles:
-        assert dot(front_normal(triangle), toward) > 0, (quad, toward)
-    return triangles
-
-
 def block(top):
     """A block standing on the floor: its top and four sides, facing outward."""
     bottom = [(x, 0.0, z) for x, _, z in top]
@@ -116,13 +98,13 @@ def block(top):
     return triangles
 
 
-def scaled_about_centre(quad, scale):
+def scaled_about_centre(quad, factor):
     middle = centroid(quad)
-    return [tuple(m + scale * (p - m) for p, m in zip(corner, middle)) for corner in quad]
+    return [tuple(m + factor * (p - m) for p, m in zip(corner, middle)) for corner in quad]
 
 
-def surfaces(light_scale):
-    """(mesh name, material name, triangles) of every surface."""
+def room_surfaces(light_scale):
+    """(mesh name, material name, triangles) of the empty box and its light."""
     return [
         ("floor", "white", facing(FLOOR, UP)),
         ("ceiling", "white", facing(CEILING, DOWN)),
@@ -130,107 +112,94 @@ def surfaces(light_scale):
         ("right_wall_green", "green", facing(RIGHT_WALL, INTO_BOX_FROM_GREEN)),
         ("left_wall_red", "red", facing(LEFT_WALL, INTO_BOX_FROM_RED)),
         ("light", "light", facing(scaled_about_centre(LIGHT, light_scale), DOWN)),
-        ("short_block", "white", block(SHORT_BLOCK_TOP)),
-        ("tall_block", "white", block(TALL_BLOCK_TOP)),
     ]
+
+
+def surfaces(light_scale, tall_block_material="white"):
+    """(mesh name, material name, triangles) of every surface of the box with
+    its two blocks."""
+    return room_surfaces(light_scale) + [
+        ("short_block", "white", block(SHORT_BLOCK_TOP)),
+        ("tall_block", tall_block_material, block(TALL_BLOCK_TOP)),
+    ]
+
+
+def room_materials(light_scale):
+    """The diffuse walls and the light, whose radiance over the area's factor
+    keeps the emitted power of the measured light."""
+    radiance = tuple(c / light_scale**2 for c in light_radiance())
+    return [material("white", WHITE), material("red", RED), material("green", GREEN),
+            material("light", LIGHT_ALBEDO, emission=radiance)]
+
+
+def add_camera(builder):
+    # glTF cameras look down -Z: half a turn about y makes this one look along +z.
+    builder.add_camera("camera", CAMERA_POSITION, [0.0, 1.0, 0.0, 0.0], CAMERA_YFOV, 1.0, 1.0)
+
+# ---------------------------------------------------------------------------
+# The glass sphere
+
+
+def glass_sphere():
+    """(positions, normals, triangles) of the glass sphere: an icosphere with
+    its exact sphere normals, its lowest vertex GLASS_SPHERE_GAP above the
+    floor."""
+    directions, faces = icosphere(GLASS_SPHERE_SUBDIVISIONS)
+    lowest = min(d[1] for d in directions)
+    x, z = GLASS_SPHERE_CENTRE_XZ
+    centre = (x, GLASS_SPHERE_GAP - GLASS_SPHERE_RADIUS * lowest, z)
+    positions = [tuple(c + GLASS_SPHERE_RADIUS * d for c, d in zip(centre, direction))
+                 for direction in directions]
+    return positions, directions, faces
 
 # ---------------------------------------------------------------------------
 # glTF
 
 
-def as_float32(x):
-    return struct.unpack("<f", struct.pack("<f", x))[0]
+VARIANTS = {
+    # option: (output, light scale, what replaces the blocks)
+    None: ("cornell-box.gltf", FULL_LIGHT, "blocks"),
+    "--small-light": ("cornell-box-small-light.gltf", SMALL_LIGHT, "blocks"),
+    "--mirror": ("cornell-mirror.gltf", FULL_LIGHT, "mirror"),
+    "--glass": ("cornell-glass.gltf", FULL_LIGHT, "glass"),
+}
 
 
-def material(name, albedo, emission=None):
-    entry = {
-        "name": name,
-        "pbrMetallicRoughness": {
-            "baseColorFactor": list(albedo) + [1.0],
-            "metallicFactor": 0.0,
-            "roughnessFactor": 1.0,
-        },
-    }
-    if emission is not None:
-        # The factor stays in [0, 1] as glTF requires; the strength carries the scale.
-        strength = max(emission)
-        entry["emissiveFactor"] = [c / strength for c in emission]
-        entry["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
-    return entry
-
-
-def build_gltf(light_scale, generator):
-    # Radiance over the area's factor keeps the emitted power of the measured light.
-    radiance = tuple(c / light_scale**2 for c in light_radiance())
-    materials = [material("white", WHITE), material("red", RED), material("green", GREEN),
-                 material("light", LIGHT_ALBEDO, radiance)]
-    material_index = {m["name"]: i for i, m in enumerate(materials)}
-
-    blob = bytearray()
-    buffer_views, accessors, meshes, nodes = [], [], [], []
-
-    def add_vec3_accessor(vectors, with_bounds):
-        buffer_views.append({"buffer": 0, "byteOffset": len(blob),
-                             "byteLength": 12 * len(vectors), "target": 34962})
-        for v in vectors:
-            blob.extend(struct.pack("<3f", *v))
-        accessor = {"bufferView": len(buffer_views) - 1, "componentType": 5126,
-                    "count": len(vectors), "type": "VEC3"}
-        if with_bounds:
-            accessor["min"] = [min(as_float32(v[c]) for v in vectors) for c in range(3)]
-            accessor["max"] = [max(as_float32(v[c]) for v in vectors) for c in range(3)]
-        accessors.append(accessor)
-        return len(accessors) - 1
-
-    for name, material_name, triangles in surfaces(light_scale):
-        # Three vertices per triangle, so each carries its triangle's flat normal.
-        positions = [corner for triangle in triangles for corner in triangle]
-        normals = [normalize(front_normal(t)) for t in triangles for _ in range(3)]
-        primitive = {
-            "attributes": {"POSITION": add_vec3_accessor(positions, True),
-                           "NORMAL": add_vec3_accessor(normals, False)},
-            "material": material_index[material_name],
-        }
-        meshes.append({"name": name, "primitives": [primitive]})
-        nodes.append({"name": name, "mesh": len(meshes) - 1})
-
-    # glTF cameras look down -Z: half a turn about y makes this one look along +z.
-    nodes.append({"name": "camera", "camera": 0, "translation": list(CAMERA_POSITION),
-                  "rotation": [0.0, 1.0, 0.0, 0.0]})
-
-    return {
-        "asset": {"version": "2.0", "generator": generator},
-        "extensionsUsed": ["KHR_materials_emissive_strength"],
-        "scene": 0,
-        "scenes": [{"name": "cornell_box", "nodes": list(range(len(nodes)))}],
-        "nodes": nodes,
-        "cameras": [{"name": "camera", "type": "perspective",
-                     "perspective": {"yfov": CAMERA_YFOV, "aspectRatio": 1.0, "znear": 1.0}}],
-        "meshes": meshes,
-        "materials": materials,
-        "accessors": accessors,
-        "bufferViews": buffer_views,
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64,"
-                            + base64.b64encode(bytes(blob)).decode("ascii")}],
-    }
+def build_gltf(variant):
+    _, light_scale, contents = VARIANTS[variant]
+    generator = "scenes/make_cornell_box.py" + (" " + variant if variant else "")
+    materials = room_materials(light_scale)
+    if contents == "mirror":
+        materials.append(MIRROR)
+    if contents == "glass":
+        materials.append(GLASS)
+    builder = Builder(materials)
+    if contents == "glass":
+        for name, material_name, triangles in room_surfaces(light_scale):
+            builder.add_flat_mesh(name, material_name, triangles)
+        builder.add_mesh("glass_sphere", "glass", *glass_sphere())
+    else:
+        tall = "mirror" if contents == "mirror" else "white"
+        for name, material_name, triangles in surfaces(light_scale, tall):
+            builder.add_flat_mesh(name, material_name, triangles)
+    add_camera(builder)
+    return builder.document(generator, "cornell_box")
 
 
 def main():
     parser = argparse.ArgumentParser(description="Write the Cornell box as glTF.")
-    parser.add_argument("--small-light", action="store_true",
-                        help="write cornell-box-small-light.gltf: a light of 1/100 the area, 100 times as bright")
+    options = parser.add_mutually_exclusive_group()
+    options.add_argument("--small-light", action="store_true",
+                         help="write cornell-box-small-light.gltf: a light of 1/100 the area, 100 times as bright")
+    options.add_argument("--mirror", action="store_true",
+                         help="write cornell-mirror.gltf: the tall block a perfect mirror")
+    options.add_argument("--glass", action="store_true",
+                         help="write cornell-glass.gltf: no blocks, a glass sphere on the floor")
     args = parser.parse_args()
-    name, light_scale, generator = "cornell-box.gltf", FULL_LIGHT, "scenes/make_cornell_box.py"
-    if args.small_light:
-        name, light_scale = "cornell-box-small-light.gltf", SMALL_LIGHT
-        generator += " --small-light"
-    output = os.path.join(SCENES_DIR, name)
-    with open(output, "w", encoding="ascii", newline="\n") as out:
-        json.dump(build_gltf(light_scale, generator), out, indent=1)
-        out.write("\n")
-    triangles = sum(len(t) for _, _, t in surfaces(light_scale))
-    print(f"wrote {output}: {triangles} triangles")
+    variant = next((v for v in VARIANTS if v and getattr(args, v[2:].replace("-", "_"))), None)
+    output = os.path.join(SCENES_DIR, VARIANTS[variant][0])
+    summary = write(output, build_gltf(variant))
+    print(f"wrote {output}: {summary['triangles']} triangles")
 
 
 if __name__ == "__main__":
