@@ -25,12 +25,18 @@ uint32_t parse_count(const std::string& flag, const std::string& text, uint64_t 
     return static_cast<uint32_t>(value);
 }
 
-double parse_positive(const std::string& flag, const std::string& text) {
+double parse_finite(const std::string& flag, const std::string& text) {
     double value = 0.0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || !(value > 0.0) || !std::isfinite(value))
-        throw InputError(flag + " " + text + ": expected a positive number");
+    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
+        throw InputError(flag + " " + text + ": expected a number");
+    return value;
+}
+
+double parse_positive(const std::string& flag, const std::string& text) {
+    const double value = parse_finite(flag, text);
+    if (!(value > 0.0)) throw InputError(flag + " " + text + ": expected a positive number");
     return value;
 }
 
@@ -96,6 +102,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--light-sampling T").help("How emitters are found: bsdf, nee or mis (default: mis)");
     ap.arg("--hemisphere H").help("Lambertian sampling: uniform or cosine (default: cosine)");
     ap.arg("--sampler S").help("Sample values: independent or sobol (Owen-scrambled) (default: independent)");
+    ap.arg("--env FILE").help("Environment light: an equirectangular .exr or .hdr, importance-sampled (default: none; a scene without any light gets a uniform white one)");
+    ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
+    ap.arg("--env-scale S").help("Multiply the environment's radiance (default: 1)");
     ap.arg("--aov A").help("Extra EXR layers: bounces (radiance after 0, 1, ..., 6 and 7+ reflections)");
     ap.separator("Error against time:");
     ap.arg("--reference REF").help("Report MSE, relMSE and MAE against this image at every checkpoint");
@@ -135,6 +144,11 @@ CommandLine parse_command_line(int argc, const char** argv) {
         parse_choice("--aov", text("aov"), {"bounces"});
         o.settings.bounce_layers = 8;
     }
+    o.environment = text("env");
+    if (!text("env-rotate").empty()) o.environment_rotate = float(parse_finite("--env-rotate", text("env-rotate")));
+    if (!text("env-scale").empty()) o.environment_scale = float(parse_positive("--env-scale", text("env-scale")));
+    if (o.environment.empty() && (!text("env-rotate").empty() || !text("env-scale").empty()))
+        throw InputError("--env-rotate and --env-scale need --env");
     o.reference = text("reference");
     o.report_csv = text("report");
     if (!text("report-every").empty()) o.progress.report_every = parse_positive("--report-every", text("report-every"));

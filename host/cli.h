@@ -18,6 +18,9 @@ struct RenderOptions {
     uint32_t height = 0;
     int camera = -1;     // -1: the file's first perspective camera
     std::string device;  // empty: the first GPU, else the first device
+    std::string environment;        // an equirectangular map; empty: none
+    float environment_rotate = 0.0f; // degrees about +y
+    float environment_scale = 1.0f;
     RenderSettings settings;
     ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
     std::string reference;    // an image to report the error against

@@ -126,13 +126,27 @@ EnvironmentMap constant_environment(float radiance) {
     return map;
 }
 
+void light_unlit_scene(Scene& scene) {
+    if (scene.environment) return;
+    for (const PunctualLight& light : scene.punctual_lights)
+        if (light.intensity[0] > 0.0f || light.intensity[1] > 0.0f || light.intensity[2] > 0.0f) return;
+    for (uint32_t material : scene.triangle_material) {
+        const glm::vec3& e = scene.materials[material].emission;
+        if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) return;
+    }
+    scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    scene.warnings.push_back("the scene has no light; lit by a uniform white environment of radiance 1");
+}
+
 DeviceEnvironment upload_environment(const cl::Context& context, const EnvironmentMap& map) {
     DeviceEnvironment d;
     d.header = map.header;
+    // OpenCL has no empty buffers: a constant map's tables are one unused float.
     const auto upload = [&](const std::vector<float>& data) {
-        d.bytes += data.size() * sizeof(float);
-        return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(float),
-                          const_cast<float*>(data.data()));
+        std::vector<float> storage = data.empty() ? std::vector<float>(1, 0.0f) : data;
+        d.bytes += storage.size() * sizeof(float);
+        return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, storage.size() * sizeof(float),
+                          storage.data());
     };
     d.texels = upload(map.texels);
     d.distribution = upload(map.distribution);

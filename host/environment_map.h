@@ -16,6 +16,7 @@
 #include <CL/opencl.hpp>
 
 #include "film.h"
+#include "scene.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {
@@ -40,6 +41,11 @@ EnvironmentMap make_environment(const Image& image, float scale, float rotate_de
 // The same radiance from every direction, sampled uniformly over the sphere;
 // radiance 1 is the furnace ("uniform white") for scenes without lights.
 EnvironmentMap constant_environment(float radiance = 1.0f);
+
+// A scene with no light at all (no emissive triangle, no punctual light, no
+// environment) gets the uniform white environment of radiance 1 and a
+// warning saying so, so that every asset renders something sensible.
+void light_unlit_scene(Scene& scene);
 
 struct DeviceEnvironment {
     Environment header{};            // pass by value as a kernel argument

@@ -30,6 +30,7 @@
 #include <set>
 
 #include "errors.h"
+#include "gltf_lights.h"
 
 namespace wf {
 namespace {
@@ -581,6 +582,7 @@ public:
         std::vector<bool> on_path(model_.nodes.size(), false);
         for (int root : root_nodes()) visit(root, glm::dmat4(1.0), on_path);
         if (scene_.triangle_count() == 0) fail(path_, "the scene has no triangles");
+        scene_.punctual_lights = punctual_lights(model_, visited_, path_);
         scene_.camera = choose_camera(options);
         return std::move(scene_);
     }
@@ -645,6 +647,7 @@ private:
         if (on_path[index]) fail(where, "the node is its own ancestor");
 
         const glm::dmat4 world = parent_world * local_transform(node, where);
+        visited_.push_back({index, world});
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail(where, "mesh " + std::to_string(node.mesh) + " does not exist");
@@ -804,6 +807,7 @@ private:
     std::vector<std::optional<MeshTriangles>> meshes_; // by glTF mesh index, built on first use
     std::optional<uint32_t> default_material_;
     std::vector<PlacedCamera> cameras_; // in the order the node walk met them
+    std::vector<NodeWorld> visited_;    // every node the walk reached, for its lights
 };
 
 } // namespace

@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "environment_map.h"
 #include "errors.h"
 #include "gltf_loader.h"
 #include "image_io.h"
@@ -83,7 +84,14 @@ RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const 
 
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
-    const Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    if (!options.environment.empty()) {
+        auto map = std::make_shared<EnvironmentMap>(
+            load_environment(options.environment, options.environment_scale, options.environment_rotate));
+        for (const std::string& w : map->warnings) log << "warning: " << options.environment << ": " << w << "\n";
+        scene.environment = std::move(map);
+    }
+    light_unlit_scene(scene);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";

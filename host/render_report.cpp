@@ -20,7 +20,8 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     const double shadow_kernel = st.stages[STAGE_INTERSECT_SHADOW].seconds;
     out << std::fixed << std::setprecision(3);
     out << "scene      " << s.scene << ": " << s.triangles << " triangles, " << s.materials << " materials, "
-        << s.emissive_triangles << " emissive triangles\n";
+        << s.emissive_triangles << " emissive triangles, " << s.punctual_lights << " punctual lights, "
+        << (s.environment ? "an environment" : "no environment") << "\n";
     out << "device     " << s.device << "\n";
     out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp -> " << s.output << "\n";
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes

@@ -20,6 +20,8 @@ struct RenderSummary {
     size_t triangles = 0;
     size_t materials = 0;
     size_t emissive_triangles = 0;
+    size_t punctual_lights = 0;
+    bool environment = false;
     size_t bvh_nodes = 0;
     int bvh_depth = 0;
     std::string device;

@@ -58,7 +58,9 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     summary_.times.kernel_build = program_.build_seconds;
     summary_.triangles = scene.triangle_count();
     summary_.materials = scene.materials.size();
-    summary_.emissive_triangles = data.lights.size();
+    summary_.emissive_triangles = data.emissive_triangles;
+    summary_.punctual_lights = data.punctual.size();
+    summary_.environment = data.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
     summary_.width = size.width;

@@ -6,13 +6,18 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "wavefront/scene_types.h"
+
 namespace wf {
+
+struct EnvironmentMap; // environment_map.h
 
 // glTF 2.0 metallic-roughness with KHR_materials_transmission, _ior and
 // _specular. The defaults here are a plain Lambertian surface (specular 0),
@@ -55,6 +60,8 @@ struct Scene {
     std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
     std::vector<SceneMaterial> materials;
     std::vector<std::string> mesh_names;
+    std::vector<PunctualLight> punctual_lights;           // KHR_lights_punctual, in world space
+    std::shared_ptr<const EnvironmentMap> environment; // light from infinitely far; none when null
     std::optional<SceneCamera> camera;
     std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
 

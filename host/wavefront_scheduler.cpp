@@ -53,6 +53,9 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
     params_.hemisphere = settings.hemisphere;
     params_.sampler = settings.sampler;
     params_.bounce_layers = settings.bounce_layers;
+    params_.environment_light = scene.environment_light;
+    params_.scene_diameter = scene.scene_diameter;
+    params_.environment = scene.environment.header;
     if (settings.local_size < WF_PATH_LENGTH_BUCKETS)
         throw InputError("local size " + std::to_string(settings.local_size) + " is below " +
                          std::to_string(WF_PATH_LENGTH_BUCKETS) + ", the path-length histogram's buckets");
@@ -80,7 +83,8 @@ void WavefrontScheduler::set_stage_args() {
     set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
     set_kernel_args(shared_then(STAGE_INTERSECT), own, scene_.nodes, scene_.triangles);
     set_kernel_args(shared_then(STAGE_SHADE), own, scene_.triangles, scene_.normals, scene_.materials, scene_.lights,
-                    film_.layers, film_.layer_compensation);
+                    scene_.punctual, scene_.environment.texels, scene_.environment.distribution, film_.layers,
+                    film_.layer_compensation);
     set_kernel_args(shared_then(STAGE_INTERSECT_SHADOW), own, scene_.nodes, scene_.triangles, film_.layers,
                     film_.layer_compensation);
     shared_then(STAGE_ROULETTE);

@@ -13,6 +13,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "image_io.h"
 #include "test_support.h"
 
 namespace wf {
@@ -195,6 +196,35 @@ TEST_F(Cli, WritesBounceLayersToExr) {
     expect_rejected(small + "-o " + path("layers.png"), "layers.png");
     expect_rejected("render " + kCornell + " --sampler halton", "--sampler halton");
     expect_rejected("render " + kCornell + " --time -3", "--time -3");
+}
+
+TEST_F(Cli, EnvironmentFlagsLightAScene) {
+    Image map;
+    map.width = 16;
+    map.height = 8;
+    map.rgb.assign(size_t{map.width} * map.height * 3, 0.5f);
+    write_image(path("sky.exr"), map, ImageMetadata{});
+    const std::string box = WF_SOURCE_DIR "/../shared/scenes-real/Box/Box.gltf";
+    const std::string small = "render '" + box + "' --width 16 --height 16 --spp 2 ";
+    const ProcessResult lit =
+        run(small + "--env " + path("sky.exr") + " --env-rotate -30 --env-scale 2 -o " + path("lit.exr"));
+    ASSERT_EQ(lit.exit_code, 0) << lit.err;
+    EXPECT_NE(lit.out.find("an environment"), std::string::npos) << lit.out;
+    EXPECT_EQ(lit.err.find("no light"), std::string::npos) << lit.err;
+
+    // Without --env the box has no light: it is lit all the same, and says so.
+    const ProcessResult unlit = run(small + "-o " + path("unlit.exr"));
+    ASSERT_EQ(unlit.exit_code, 0) << unlit.err;
+    EXPECT_NE(unlit.err.find("no light"), std::string::npos) << unlit.err;
+    const Image image = read_image(path("unlit.exr"));
+    double sum = 0.0;
+    for (float v : image.rgb) sum += v;
+    EXPECT_GT(sum, 0.0);
+
+    expect_rejected(small + "--env " + path("missing.exr") + " -o " + path("x.exr"), "missing.exr");
+    expect_rejected(small + "--env-scale 2 -o " + path("x.exr"), "--env");
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-scale -1 -o " + path("x.exr"), "--env-scale");
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-rotate nan -o " + path("x.exr"), "--env-rotate");
 }
 
 } // namespace

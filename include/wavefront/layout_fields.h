@@ -16,13 +16,15 @@
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
     X(Material, base_color) X(Material, flags) X(Material, emission) X(Material, metallic)       \
     X(Material, roughness) X(Material, transmission) X(Material, ior) X(Material, specular)        \
-    X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, triangle) X(LightEntry, pmf)    \
+    X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, index) X(LightEntry, pmf)       \
+    X(LightEntry, kind)                                                                           \
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \
     X(Camera, width) X(Camera, forward) X(Camera, height)                                         \
     X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
-    X(RenderParams, sampler) X(RenderParams, bounce_layers)                                       \
+    X(RenderParams, sampler) X(RenderParams, bounce_layers) X(RenderParams, environment_light)     \
+    X(RenderParams, scene_diameter) X(RenderParams, environment)                                  \
     X(Environment, scale) X(Environment, flags) X(Environment, cos_rotation)                      \
     X(Environment, sin_rotation) X(Environment, width) X(Environment, height)                     \
     X(PunctualLight, position) X(PunctualLight, type) X(PunctualLight, direction)                 \

@@ -9,6 +9,7 @@
 #define WAVEFRONT_PATH_STATE_H
 
 #include "wavefront/compat.h"
+#include "wavefront/scene_types.h"
 
 /* Constants of one render, passed by value to every stage kernel. */
 typedef struct RenderParams {
@@ -23,8 +24,12 @@ typedef struct RenderParams {
     uint32_t hemisphere;     /* WF_HEMISPHERE_* */
     uint32_t sampler;        /* WF_SAMPLER_* */
     uint32_t bounce_layers;  /* film layers by bounce count (0: none), the last one open-ended */
-    uint32_t pad;
+    uint32_t environment_light; /* its entry in the light table; WF_NO_LIGHT without one */
+    float scene_diameter;    /* of the scene's bounds: a shadow ray toward infinity stops past them */
+    uint32_t pad[3];
+    Environment environment; /* valid when environment_light != WF_NO_LIGHT */
 } RenderParams;
+
 
 /* How emitters are found: by BRDF sampling alone, by next-event estimation
  * alone, or both weighted by the power heuristic. */

@@ -55,12 +55,20 @@ typedef struct Material {
     float specular;      /* in [0, 1]; 0 leaves a plain Lambertian surface */
 } Material;
 
-/* One entry of the alias table over emissive triangles, chosen by power. */
+/* The kinds of light next-event estimation chooses among. */
+#define WF_LIGHT_TRIANGLE 0u    /* an emissive triangle */
+#define WF_LIGHT_PUNCTUAL 1u    /* a KHR_lights_punctual light: a delta light */
+#define WF_LIGHT_ENVIRONMENT 2u /* the environment, at most one */
+#define WF_NO_LIGHT 0xffffffffu /* an index into the light table that names none */
+
+/* One entry of the alias table over every light, chosen by power. */
 typedef struct LightEntry {
     float probability; /* keep this entry with this probability, else take alias */
     uint32_t alias;
-    uint32_t triangle; /* index into the Triangle buffer */
-    float pmf;         /* probability that this entry's triangle is chosen */
+    uint32_t index;    /* into the Triangle or PunctualLight buffer, by kind */
+    float pmf;         /* probability that this entry's light is chosen */
+    uint32_t kind;     /* WF_LIGHT_* */
+    uint32_t pad[3];
 } LightEntry;
 
 /* A pinhole camera; pixel (0,0) is the top-left corner of the image. */

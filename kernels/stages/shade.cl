@@ -1,19 +1,21 @@
 /* shade — what happens where a ray landed.
  *
- * For each path in the extension queue: a miss ends the path (no environment
- * yet); a hit on an emitter adds its radiance; then, unless the path has
- * reached --max-depth, one light sample is prepared for intersect_shadow (next-
- * event estimation) and the Lambertian BRDF chooses the continuation ray, which
- * roulette may end. --light-sampling decides which of the two techniques
- * counts emitted light: BRDF sampling alone, NEE alone, or both weighted by the
- * power heuristic (MIS), so that no light is counted twice. */
+ * For each path in the extension queue: a miss adds the environment's radiance,
+ * if the scene has one, and ends the path; a hit on an emitter adds its
+ * radiance; then, unless the path has reached --max-depth, one light sample is
+ * prepared for intersect_shadow (next-event estimation, over every kind of
+ * light) and the Lambertian BRDF chooses the continuation ray, which roulette
+ * may end. --light-sampling decides which of the two techniques counts emitted
+ * light: BRDF sampling alone, NEE alone, or both weighted by the power
+ * heuristic (MIS), so that no light is counted twice. Delta lights are found
+ * by NEE alone, whatever the technique. */
 #include "path_state.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
 #include "common/queue_push.h"
 #include "common/sample_values.h"
 #include "bsdf/lambert.h"
-#include "lights/emissive_triangles.h"
+#include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 
 #define WF_SHADE_FINISHED 0u
@@ -57,33 +59,51 @@ inline float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_ligh
     return power_heuristic(pdf_bsdf, pdf_light);
 }
 
+/* Radiance the path gathers, into its sum and its bounce layer. */
+inline void add_radiance(PathState* path, const RenderParams* params, __global float4* layers,
+                         __global float4* layer_compensation, uint slot, uint pixel, uint depth, float3 radiance) {
+    path->radiance[slot].xyz += radiance;
+    add_to_bounce_layer(params, layers, layer_compensation, pixel, depth, radiance);
+}
+
 inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                        __global const Triangle* triangles, __global const TriangleNormals* normals,
                        __global const Material* materials, __global const LightEntry* lights,
-                       __global float4* layers, __global float4* layer_compensation) {
+                       __global const PunctualLight* punctual, __global const float* environment_texels,
+                       __global const float* environment_distribution, __global float4* layers,
+                       __global float4* layer_compensation) {
     const float4 hit = path->hit[slot];
     const int triangle = as_int(hit.w);
-    if (triangle < 0) return WF_SHADE_FINISHED;
-
     const float4 ray = path->ray_direction[slot];
     const float3 direction = ray.xyz;
-    const float pdf_previous = ray.w; /* 0 for camera rays: nothing to weigh against */
+    const float pdf_previous = ray.w; /* 0 for camera rays and delta bounces: nothing to weigh against */
     const uint depth = path->depth[slot];
     const uint pixel = path->pixel[slot];
+    const float3 throughput = path->throughput[slot].xyz;
+
+    if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
+        if (params->environment_light != WF_NO_LIGHT) {
+            const float pdf_light = lights[params->environment_light].pmf *
+                                    environment_pdf(params->environment, environment_texels, direction);
+            const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
+            add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
+                         weight * throughput * environment_radiance(params->environment, environment_texels, direction));
+        }
+        return WF_SHADE_FINISHED;
+    }
+
     const uint sample = path->sample[slot];
     const __global Triangle* t = &triangles[triangle];
     const __global Material* m = &materials[t->material];
     const SurfaceHit s = surface_at(t, &normals[triangle], hit, direction);
-    const float3 throughput = path->throughput[slot].xyz;
 
     /* Emission seen along the ray. */
     if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
         const float cos_light = -dot(s.geometric_normal, direction);
         const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-        const float3 emitted = weight * throughput * vload3(0, m->emission);
-        path->radiance[slot].xyz += emitted;
-        add_to_bounce_layer(params, layers, layer_compensation, pixel, depth, emitted);
+        add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
+                     weight * throughput * vload3(0, m->emission));
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
@@ -94,21 +114,24 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const float3 origin = offset_ray_origin(s.position, s.position_error, s.geometric_normal, s.geometric_normal);
     uint outcome = WF_SHADE_FINISHED;
 
-    /* Next-event estimation: one point on one emitter. */
-    if (params->light_count > 0u && params->light_sampling != WF_LIGHT_SAMPLING_BSDF) {
+    /* Next-event estimation: one point on, or direction to, one light. Delta
+     * lights are sampled whatever the technique: nothing else finds them. */
+    if (params->light_count > 0u) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-        const LightSample ls = sample_light(lights, params->light_count, triangles, materials, s.position, u);
-        const float3 wi = normalize(ls.point - s.position);
+        const LightSample ls = sample_light(params, lights, triangles, materials, punctual, environment_texels,
+                                            environment_distribution, s.position, u);
+        const float3 wi = ls.wi;
         const float cos_surface = dot(s.shading_normal, wi);
-        if (ls.pdf > 0.0f && cos_surface > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
-            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS
+        const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
+        if (counted && ls.pdf > 0.0f && cos_surface > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
+            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls.delta
                                      ? power_heuristic(ls.pdf, lambert_pdf(s.shading_normal, wi, params->hemisphere))
                                      : 1.0f;
             const float3 contribution = throughput * f * ls.radiance * (cos_surface * weight / ls.pdf);
             if (is_finite3(contribution)) {
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] =
-                    (float4)(segment_to_surface(origin, ls.point, ls.point_error, ls.normal), 0.0f);
+                    (float4)(light_shadow_segment(&ls, origin, 2.0f * params->scene_diameter), 0.0f);
                 /* w: the bounce layer the light joins if it arrives. */
                 path->shadow_radiance[slot] = (float4)(contribution, as_float(depth + 1u));
                 outcome |= WF_SHADE_SHADOW_RAY;
@@ -133,14 +156,16 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
 
 __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     __global const TriangleNormals* normals, __global const Material* materials,
-                    __global const LightEntry* lights, __global float4* layers,
-                    __global float4* layer_compensation) {
+                    __global const LightEntry* lights, __global const PunctualLight* punctual,
+                    __global const float* environment_texels, __global const float* environment_distribution,
+                    __global float4* layers, __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
     __local uint scratch[2];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights,
-                                             layers, layer_compensation)
+    const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
+                                             environment_texels, environment_distribution, layers,
+                                             layer_compensation)
                                 : WF_SHADE_FINISHED;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot,
