@@ -3,8 +3,8 @@
  * and WF_DEVICE_END.
  *
  * Shared code is written against this vocabulary: fixed-width integers, float3
- * with dot/cross/min/max, make_float3, float4 with make_float4, as_uint/as_float,
- * and WF_GLOBAL for the address space of scene buffers. On the device these are
+ * with dot/cross/min/max, make_float3, float2 with make_float2, float4 with
+ * make_float4, as_uint/as_float, floor and pow on float, and WF_GLOBAL for the address space of scene buffers. On the device these are
  * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
  * else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
@@ -16,6 +16,7 @@ typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_INLINE inline
+#define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define WF_DEVICE_BEGIN
@@ -33,6 +34,8 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 #define WF_INLINE inline
 
 namespace wf_compat {
+using float2 = glm::vec2;
+inline float2 make_float2(float x, float y) { return float2(x, y); }
 using float3 = glm::vec3;
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
 using float4 = glm::vec4;
@@ -51,6 +54,8 @@ using glm::cross;
 using glm::dot;
 using std::fabs; /* its float overload, beside the float3 one above */
 using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
+using std::floor;     /* float overloads of the OpenCL built-ins of these names */
+using std::pow;
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

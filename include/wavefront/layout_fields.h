@@ -6,7 +6,8 @@
 #define WAVEFRONT_LAYOUT_FIELDS_H
 
 #define WF_LAYOUT_STRUCTS(X) \
-    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams)
+    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
+    X(TextureInfo) X(TextureRef) X(MaterialTextureParams)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
@@ -21,6 +22,11 @@
     X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
-    X(RenderParams, sampler) X(RenderParams, bounce_layers)
+    X(RenderParams, sampler) X(RenderParams, bounce_layers)                                       \
+    X(TextureInfo, offset) X(TextureInfo, width) X(TextureInfo, height) X(TextureInfo, flags)     \
+    X(TextureInfo, wrap_s) X(TextureInfo, wrap_t) X(TextureInfo, channels)                        \
+    X(TextureRef, texture) X(TextureRef, texcoord) X(TextureRef, transform)                       \
+    X(MaterialTextureParams, normal_scale) X(MaterialTextureParams, alpha_mode)                   \
+    X(MaterialTextureParams, alpha_cutoff) X(MaterialTextureParams, base_alpha)
 
 #endif /* WAVEFRONT_LAYOUT_FIELDS_H */
