@@ -3,10 +3,11 @@
 // trusts the file: it does not range-check accessors, indices or node
 // references, and it parses sparse accessors without applying them.
 //
-// In load order: read the file, parse it (images accepted undecoded), check
-// extensions, convert materials one to one, walk the node tree of the default
-// scene instancing each mesh's object-space triangles with the node's world
-// matrix, then pick the camera among those the walk met.
+// In load order: read the file, parse it (images kept encoded), check
+// extensions, convert materials one to one (decoding the images they use,
+// gltf_textures.h), walk the node tree of the default scene instancing each
+// mesh's object-space triangles with the node's world matrix, then pick the
+// camera among those the walk met.
 
 #include "gltf_loader.h"
 
@@ -30,6 +31,7 @@
 #include <set>
 
 #include "errors.h"
+#include "gltf_textures.h"
 
 namespace wf {
 namespace {
@@ -107,13 +109,6 @@ std::vector<unsigned char> read_file(const std::string& path) {
     return bytes;
 }
 
-// Textures are not supported yet, so images are accepted without decoding: a
-// missing or undecodable image must not fail the load.
-bool accept_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                            const unsigned char*, int, void*) {
-    return true;
-}
-
 Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -121,10 +116,12 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
     const auto length = static_cast<unsigned int>(bytes.size());
 
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(accept_image_undecoded, nullptr);
+    // Images are kept encoded; gltf_textures.cpp decodes those materials use,
+    // so a missing or broken image is reported with the material.
+    parser.SetImageLoader(keep_image_encoded, nullptr);
     Model model;
     std::string error;
-    std::string warning; // only about images, which are not read yet
+    std::string warning; // only about images, which gltf_textures.cpp reports itself
     bool parsed = false;
     try {
         parsed = binary ? parser.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
@@ -148,7 +145,8 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
 
 const std::set<std::string>& supported_extensions() {
     static const std::set<std::string> names = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                "KHR_materials_specular", "KHR_materials_transmission"};
+                                                "KHR_materials_specular", "KHR_materials_transmission",
+                                                "KHR_texture_transform"};
     return names;
 }
 
@@ -177,13 +175,6 @@ void check_core_features(const Model& model, std::vector<std::string>& warnings)
     if (!model.animations.empty())
         warnings.push_back(std::to_string(model.animations.size()) +
                            " animation(s) not supported, rendered at rest");
-}
-
-bool uses_texture(const tinygltf::Material& material) {
-    return material.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
-           material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ||
-           material.normalTexture.index >= 0 || material.occlusionTexture.index >= 0 ||
-           material.emissiveTexture.index >= 0;
 }
 
 // tinygltf fills defaults but does not check every array's length.
@@ -595,13 +586,12 @@ private:
     // Scene::materials mirrors the file's materials index for index; the
     // default material, if needed, comes after them.
     void convert_materials() {
-        bool textured = false;
+        GltfTextures textures(model_, path_, scene_.textures);
         for (size_t i = 0; i < model_.materials.size(); ++i) {
             scene_.materials.push_back(convert_material(model_.materials[i], i, path_));
-            textured = textured || uses_texture(model_.materials[i]);
+            textures.convert(model_.materials[i], i, scene_.materials.back()); // gltf_textures.h
         }
-        if (textured)
-            scene_.warnings.push_back("textures are not supported yet; using material factors");
+        for (std::string& warning : textures.warnings()) scene_.warnings.push_back(std::move(warning));
     }
 
     uint32_t material_index(int gltf_material, const std::string& where) {

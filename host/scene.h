@@ -4,6 +4,7 @@
 // into the buffers the kernels read.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -11,6 +12,8 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "texture_set.h"
 
 namespace wf {
 
@@ -27,6 +30,14 @@ struct SceneMaterial {
     float specular = 0.0f;      // 0: no specular lobe at all
     glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
     bool double_sided = false;  // one-sided surfaces emit from the front face only
+
+    // Texture maps, one per WF_TEXTURE_* slot (scene_types.h), indexing
+    // Scene::textures; none by default. The factors above multiply them.
+    std::array<TextureRef, WF_TEXTURE_SLOTS> textures = {no_texture(), no_texture(), no_texture(), no_texture()};
+    float normal_scale = 1.0f;          // glTF normalTexture.scale
+    uint32_t alpha_mode = WF_ALPHA_OPAQUE;
+    float alpha_cutoff = 0.5f;          // for WF_ALPHA_MASK
+    float base_alpha = 1.0f;            // baseColorFactor's alpha
 };
 
 struct SceneCamera {
@@ -55,6 +66,7 @@ struct Scene {
     std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
     std::vector<SceneMaterial> materials;
     std::vector<std::string> mesh_names;
+    TextureSet textures; // what SceneMaterial::textures index
     std::optional<SceneCamera> camera;
     std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
 
