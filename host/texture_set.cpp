@@ -45,6 +45,10 @@ DecodedImage decode_image(const unsigned char* bytes, size_t size, const std::st
     OIIO::Filesystem::IOMemReader reader(bytes, size);
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // glTF alpha is straight, not premultiplied
+    // OpenImageIO 2.4's readers take the proxy from the configuration too;
+    // without this attribute they try to open the file name.
+    OIIO::Filesystem::IOProxy* proxy = &reader;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
     auto input = OIIO::ImageInput::open(format_name(bytes, size, name), &config, &reader);
     if (!input) throw InputError(where + ": cannot decode: " + one_line(OIIO::geterror()));
     const OIIO::ImageSpec& spec = input->spec();
