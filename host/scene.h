@@ -62,6 +62,10 @@ struct Scene {
     // Three entries per triangle, counter-clockwise seen from the front face.
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals; // shading normals, per corner; never empty beside positions
+    // Per corner like normals when loaded from glTF (zero where the file has
+    // none); empty for scenes built in code, which have no texture coordinates.
+    std::vector<glm::vec2> uv0, uv1; // TEXCOORD_0 and TEXCOORD_1
+    std::vector<glm::vec4> tangents; // xyz unit, orthogonal to the normal; w = ±1: bitangent = cross(n, t) w
     std::vector<uint32_t> triangle_material; // one per triangle, index into materials
     std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
     std::vector<SceneMaterial> materials;

@@ -22,6 +22,7 @@
 #include "gltf_loader.h"
 #include "materials/texture.h"
 #include "kernel_sources.h"
+#include "tangents.h"
 #include "test_support.h"
 
 namespace wf {
@@ -545,6 +546,72 @@ TEST_F(TextureGltfFiles, DataUriGreyImageAndTransformAndBlend) {
     EXPECT_FLOAT_EQ(scene.materials[0].alpha_cutoff, 0.5f);
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_EQ(scene.warnings[0], "alpha mode BLEND on 1 material(s) is rendered as MASK with cutoff 0.5");
+}
+
+// ---------------------------------------------------------------------------
+// Tangents (host/tangents.h, and the loader's use of them)
+
+TEST(TextureTangents, QuadWithKnownUvsGivesTangentAndHandedness) {
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+    const std::vector<glm::vec3> n(4, glm::vec3(0, 0, 1));
+    const std::vector<uint32_t> corners = {0, 1, 2, 0, 2, 3};
+    // u along +x, v along +y: tangent +x, bitangent +y = cross(+z, +x), so w = +1.
+    for (const glm::vec4& t : generate_tangents(p, n, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, corners)) {
+        EXPECT_NEAR(glm::distance(glm::vec3(t), glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+        EXPECT_EQ(t.w, 1.0f);
+    }
+    // u mirrored: tangent -x, bitangent still +y = -cross(+z, -x), so w = -1.
+    for (const glm::vec4& t : generate_tangents(p, n, {{1, 0}, {0, 0}, {0, 1}, {1, 1}}, corners)) {
+        EXPECT_NEAR(glm::distance(glm::vec3(t), glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
+        EXPECT_EQ(t.w, -1.0f);
+    }
+    // Normals tilted off +z: the tangent is made orthogonal to each, still unit.
+    const glm::vec3 tilted = glm::normalize(glm::vec3(1, 0, 1));
+    for (const glm::vec4& t : generate_tangents(p, std::vector<glm::vec3>(4, tilted), {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, corners)) {
+        EXPECT_NEAR(glm::dot(glm::vec3(t), tilted), 0.0f, 1e-6f);
+        EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-6f);
+        EXPECT_GT(t.x, 0.0f);
+    }
+}
+
+TEST(TextureTangents, DegenerateUvsGiveAnyOrthogonalTangentNeverNaN) {
+    const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}};
+    const std::vector<glm::vec3> n = {{0, 0, 1}, {0, 0, -1}, glm::normalize(glm::vec3(1, 2, 3)), {0, 0, 0}};
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const std::vector<glm::vec2>& uv : {std::vector<glm::vec2>(4, glm::vec2(0.5f)),
+                                             std::vector<glm::vec2>{{0, 0}, {1, 1}, {2, 2}, {3, 3}},
+                                             std::vector<glm::vec2>(4, glm::vec2(nan))}) {
+        const std::vector<glm::vec4> t = generate_tangents(p, n, uv, {0, 1, 2, 3, 3, 3});
+        for (size_t i = 0; i < 3; ++i) {
+            EXPECT_NEAR(glm::length(glm::vec3(t[i])), 1.0f, 1e-5f) << i;
+            EXPECT_NEAR(glm::dot(glm::vec3(t[i]), n[i]), 0.0f, 1e-5f) << i;
+            EXPECT_EQ(std::abs(t[i].w), 1.0f);
+        }
+        EXPECT_TRUE(std::isfinite(t[3].x) && std::isfinite(t[3].y) && std::isfinite(t[3].z)); // zero normal, zero area
+    }
+}
+
+TEST(TextureTangents, NormalTangentTestLoadsWithFiniteUnitTangents) {
+    const Scene scene = load_gltf(kRealScenes + "NormalTangentTest/NormalTangentTest.gltf");
+    ASSERT_EQ(scene.tangents.size(), scene.positions.size());
+    ASSERT_EQ(scene.uv0.size(), scene.positions.size());
+    double worst_length = 0, worst_dot = 0;
+    glm::dvec2 uv_lo(1e9), uv_hi(-1e9);
+    for (size_t i = 0; i < scene.tangents.size(); ++i) {
+        const glm::vec4& t = scene.tangents[i];
+        ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z)) << i;
+        ASSERT_EQ(std::abs(t.w), 1.0f) << i;
+        worst_length = std::max(worst_length, double(std::abs(glm::length(glm::vec3(t)) - 1.0f)));
+        worst_dot = std::max(worst_dot, double(std::abs(glm::dot(glm::vec3(t), scene.normals[i]))));
+        uv_lo = glm::min(uv_lo, glm::dvec2(scene.uv0[i]));
+        uv_hi = glm::max(uv_hi, glm::dvec2(scene.uv0[i]));
+    }
+    EXPECT_LT(worst_length, 1e-5);
+    EXPECT_LT(worst_dot, 1e-5);
+    EXPECT_GT(uv_hi.x - uv_lo.x, 0.5); // the UVs were read, not zero
+    test::report_measured("NormalTangentTest: " + std::to_string(scene.tangents.size()) +
+                          " generated tangents, largest | |t| - 1 | " + std::to_string(worst_length) +
+                          ", largest |t . n| " + std::to_string(worst_dot));
 }
 
 } // namespace
