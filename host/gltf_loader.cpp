@@ -3,10 +3,11 @@
 // trusts the file: it does not range-check accessors, indices or node
 // references, and it parses sparse accessors without applying them.
 //
-// In load order: read the file, parse it (images accepted undecoded), check
-// extensions, convert materials one to one, walk the node tree of the default
-// scene instancing each mesh's object-space triangles with the node's world
-// matrix, then pick the camera among those the walk met.
+// In load order: read the file, parse it (images kept encoded), check
+// extensions, convert materials one to one (decoding the images they use,
+// gltf_textures.h), walk the node tree of the default scene instancing each
+// mesh's object-space triangles with the node's world matrix, then pick the
+// camera among those the walk met.
 
 #include "gltf_loader.h"
 
@@ -31,6 +32,8 @@
 
 #include "errors.h"
 #include "gltf_lights.h"
+#include "gltf_textures.h"
+#include "tangents.h"
 
 namespace wf {
 namespace {
@@ -108,13 +111,6 @@ std::vector<unsigned char> read_file(const std::string& path) {
     return bytes;
 }
 
-// Textures are not supported yet, so images are accepted without decoding: a
-// missing or undecodable image must not fail the load.
-bool accept_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                            const unsigned char*, int, void*) {
-    return true;
-}
-
 Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -122,10 +118,12 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
     const auto length = static_cast<unsigned int>(bytes.size());
 
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(accept_image_undecoded, nullptr);
+    // Images are kept encoded; gltf_textures.cpp decodes those materials use,
+    // so a missing or broken image is reported with the material.
+    parser.SetImageLoader(keep_image_encoded, nullptr);
     Model model;
     std::string error;
-    std::string warning; // only about images, which are not read yet
+    std::string warning; // only about images, which gltf_textures.cpp reports itself
     bool parsed = false;
     try {
         parsed = binary ? parser.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
@@ -149,7 +147,8 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
 
 const std::set<std::string>& supported_extensions() {
     static const std::set<std::string> names = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                "KHR_materials_specular", "KHR_materials_transmission"};
+                                                "KHR_materials_specular", "KHR_materials_transmission",
+                                                "KHR_texture_transform"};
     return names;
 }
 
@@ -178,13 +177,6 @@ void check_core_features(const Model& model, std::vector<std::string>& warnings)
     if (!model.animations.empty())
         warnings.push_back(std::to_string(model.animations.size()) +
                            " animation(s) not supported, rendered at rest");
-}
-
-bool uses_texture(const tinygltf::Material& material) {
-    return material.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
-           material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ||
-           material.normalTexture.index >= 0 || material.occlusionTexture.index >= 0 ||
-           material.emissiveTexture.index >= 0;
 }
 
 // tinygltf fills defaults but does not check every array's length.
@@ -423,6 +415,47 @@ std::vector<glm::vec3> read_vec3_attribute(const Model& model, int index, const 
     return vectors;
 }
 
+// TEXCOORD_n: VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT
+// (glTF 2.0 §3.7.2.1); zeros where the primitive has none.
+std::vector<glm::vec2> read_texcoords(const Model& model, int index, size_t vertex_count,
+                                      const std::string& where, const std::string& role) {
+    if (index < 0) return std::vector<glm::vec2>(vertex_count, glm::vec2(0.0f));
+    const Accessor& accessor = find_accessor(model, index, where, role);
+    const std::string what = accessor_name(index, role);
+    const int type = accessor.componentType;
+    const double scale = type == TINYGLTF_COMPONENT_TYPE_FLOAT            ? 1.0
+                         : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE  ? 1.0 / 255.0
+                         : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 1.0 / 65535.0
+                                                                          : 0.0;
+    if (accessor.type != TINYGLTF_TYPE_VEC2 || scale == 0.0 ||
+        (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized))
+        fail(where, what + " must be VEC2 of FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, not " +
+                        describe_format(accessor));
+    const std::vector<double> values = read_accessor(model, accessor, where, what);
+    if (accessor.count != vertex_count)
+        fail(where, role + " has " + std::to_string(accessor.count) + " elements but POSITION has " +
+                        std::to_string(vertex_count));
+    std::vector<glm::vec2> uv(vertex_count);
+    for (size_t i = 0; i < vertex_count; ++i) uv[i] = glm::vec2(values[2 * i] * scale, values[2 * i + 1] * scale);
+    return uv;
+}
+
+// TANGENT: VEC4 of FLOAT, w the handedness.
+std::vector<glm::vec4> read_tangents(const Model& model, int index, size_t vertex_count, const std::string& where) {
+    const Accessor& accessor = find_accessor(model, index, where, "TANGENT");
+    const std::string what = accessor_name(index, "TANGENT");
+    if (accessor.type != TINYGLTF_TYPE_VEC4 || accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+        fail(where, what + " must be VEC4 of FLOAT, not " + describe_format(accessor));
+    if (accessor.count != vertex_count)
+        fail(where, "TANGENT has " + std::to_string(accessor.count) + " elements but POSITION has " +
+                        std::to_string(vertex_count));
+    const std::vector<double> values = read_accessor(model, accessor, where, what);
+    std::vector<glm::vec4> tangents(vertex_count);
+    for (size_t i = 0; i < vertex_count; ++i)
+        tangents[i] = glm::vec4(values[4 * i], values[4 * i + 1], values[4 * i + 2], values[4 * i + 3]);
+    return tangents;
+}
+
 std::vector<uint32_t> read_indices(const Model& model, int index, const std::string& where) {
     const Accessor& accessor = find_accessor(model, index, where, "indices");
     const std::string what = accessor_name(index, "indices");
@@ -505,6 +538,8 @@ struct SkippedElements {
 struct MeshTriangles {
     std::vector<glm::vec3> positions; // three per triangle
     std::vector<glm::vec3> normals;   // three per triangle; zero where the file has none
+    std::vector<glm::vec2> uv0, uv1;  // three per triangle; zero where the file has none
+    std::vector<glm::vec4> tangents;  // three per triangle; the file's, or generated (tangents.h)
     std::vector<uint32_t> materials;  // one per triangle, index into Scene::materials
     uint32_t name_index = 0;          // into Scene::mesh_names
 };
@@ -597,13 +632,12 @@ private:
     // Scene::materials mirrors the file's materials index for index; the
     // default material, if needed, comes after them.
     void convert_materials() {
-        bool textured = false;
+        GltfTextures textures(model_, path_, scene_.textures);
         for (size_t i = 0; i < model_.materials.size(); ++i) {
             scene_.materials.push_back(convert_material(model_.materials[i], i, path_));
-            textured = textured || uses_texture(model_.materials[i]);
+            textures.convert(model_.materials[i], i, scene_.materials.back()); // gltf_textures.h
         }
-        if (textured)
-            scene_.warnings.push_back("textures are not supported yet; using material factors");
+        for (std::string& warning : textures.warnings()) scene_.warnings.push_back(std::move(warning));
     }
 
     uint32_t material_index(int gltf_material, const std::string& where) {
@@ -672,7 +706,8 @@ private:
         const MeshTriangles& mesh = mesh_triangles(mesh_index);
         const glm::dmat3 linear(world);
         const glm::dmat3 normal_matrix = glm::inverseTranspose(linear);
-        const std::array<size_t, 3> order = glm::determinant(linear) < 0.0
+        const bool mirrored = glm::determinant(linear) < 0.0;
+        const std::array<size_t, 3> order = mirrored
                                                 ? std::array<size_t, 3>{0, 2, 1}
                                                 : std::array<size_t, 3>{0, 1, 2};
         for (size_t triangle = 0; triangle < mesh.materials.size(); ++triangle) {
@@ -689,10 +724,18 @@ private:
             const glm::dvec3 geometric =
                 direction_of(glm::cross(p[1] - p[0], p[2] - p[0])).value_or(glm::dvec3(0, 0, 1));
             for (size_t k = 0; k < 3; ++k) {
-                const glm::dvec3 normal =
-                    normal_matrix * glm::dvec3(mesh.normals[3 * triangle + order[k]]);
+                const size_t corner = 3 * triangle + order[k];
+                const glm::dvec3 normal = normal_matrix * glm::dvec3(mesh.normals[corner]);
+                const glm::vec3 unit_normal(direction_of(normal).value_or(geometric));
                 scene_.positions.push_back(glm::vec3(p[k]));
-                scene_.normals.push_back(glm::vec3(direction_of(normal).value_or(geometric)));
+                scene_.normals.push_back(unit_normal);
+                scene_.uv0.push_back(mesh.uv0[corner]);
+                scene_.uv1.push_back(mesh.uv1[corner]);
+                // Tangents move with the surface (not the inverse transpose);
+                // a mirroring transform flips the handedness.
+                const glm::vec4 t = mesh.tangents[corner];
+                scene_.tangents.push_back(orthogonal_tangent(unit_normal, glm::vec3(linear * glm::dvec3(t)),
+                                                             mirrored ? -t.w : t.w));
             }
             scene_.triangle_material.push_back(mesh.materials[triangle]);
             scene_.triangle_mesh.push_back(mesh.name_index);
@@ -766,9 +809,21 @@ private:
                                 std::to_string(positions.size()) + " vertices)");
 
         const uint32_t material = material_index(primitive.material, where);
-        for (uint32_t corner : triangle_corners(primitive.mode, vertices)) {
+        const std::vector<glm::vec2> uv0 = read_texcoords(model_, attribute("TEXCOORD_0"), positions.size(), where, "TEXCOORD_0");
+        const std::vector<glm::vec2> uv1 = read_texcoords(model_, attribute("TEXCOORD_1"), positions.size(), where, "TEXCOORD_1");
+        const std::vector<uint32_t> corners = triangle_corners(primitive.mode, vertices);
+        // Generated from the UV set the material's normal map reads.
+        const int tangent_accessor = attribute("TANGENT");
+        const bool normal_map_uv1 = scene_.materials[material].textures[WF_TEXTURE_NORMAL].texcoord == 1u;
+        const std::vector<glm::vec4> tangents =
+            tangent_accessor >= 0 ? read_tangents(model_, tangent_accessor, positions.size(), where)
+                                  : generate_tangents(positions, normals, normal_map_uv1 ? uv1 : uv0, corners);
+        for (uint32_t corner : corners) {
             out.positions.push_back(positions[corner]);
             out.normals.push_back(normals[corner]);
+            out.uv0.push_back(uv0[corner]);
+            out.uv1.push_back(uv1[corner]);
+            out.tangents.push_back(tangents[corner]);
         }
         out.materials.resize(out.positions.size() / 3, material);
     }

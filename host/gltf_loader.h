@@ -1,8 +1,8 @@
 // gltf_loader.h — reads a glTF 2.0 file (.gltf or .glb) into a wf::Scene:
 // every triangle of the default scene in world space with its shading normals
-// and material, and the camera if one is asked for or present. Everything the
-// renderer cannot use yet (points, lines, textures, unknown extensions) is
-// skipped with a warning in Scene::warnings; everything it cannot trust
+// and material, the textures its materials use (gltf_textures.h), and the
+// camera if one is asked for or present. Everything the renderer cannot use
+// yet (points, lines, unknown extensions) is skipped with a warning in Scene::warnings; everything it cannot trust
 // (bad JSON, short buffers, non-finite positions, stray indices) is an
 // InputError whose one-line message names the file and, where one is at
 // fault, the mesh.

@@ -4,6 +4,7 @@
 // into the buffers the kernels read.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -14,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "wavefront/scene_types.h"
+#include "texture_set.h"
 
 namespace wf {
 
@@ -32,6 +34,14 @@ struct SceneMaterial {
     float specular = 0.0f;      // 0: no specular lobe at all
     glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
     bool double_sided = false;  // one-sided surfaces emit from the front face only
+
+    // Texture maps, one per WF_TEXTURE_* slot (scene_types.h), indexing
+    // Scene::textures; none by default. The factors above multiply them.
+    std::array<TextureRef, WF_TEXTURE_SLOTS> textures = {no_texture(), no_texture(), no_texture(), no_texture()};
+    float normal_scale = 1.0f;          // glTF normalTexture.scale
+    uint32_t alpha_mode = WF_ALPHA_OPAQUE;
+    float alpha_cutoff = 0.5f;          // for WF_ALPHA_MASK
+    float base_alpha = 1.0f;            // baseColorFactor's alpha
 };
 
 struct SceneCamera {
@@ -56,12 +66,17 @@ struct Scene {
     // Three entries per triangle, counter-clockwise seen from the front face.
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals; // shading normals, per corner; never empty beside positions
+    // Per corner like normals when loaded from glTF (zero where the file has
+    // none); empty for scenes built in code, which have no texture coordinates.
+    std::vector<glm::vec2> uv0, uv1; // TEXCOORD_0 and TEXCOORD_1
+    std::vector<glm::vec4> tangents; // xyz unit, orthogonal to the normal; w = ±1: bitangent = cross(n, t) w
     std::vector<uint32_t> triangle_material; // one per triangle, index into materials
     std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
     std::vector<SceneMaterial> materials;
     std::vector<std::string> mesh_names;
     std::vector<PunctualLight> punctual_lights;           // KHR_lights_punctual, in world space
     std::shared_ptr<const EnvironmentMap> environment; // light from infinitely far; none when null
+    TextureSet textures; // what SceneMaterial::textures index
     std::optional<SceneCamera> camera;
     std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
 

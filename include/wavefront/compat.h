@@ -4,7 +4,7 @@
  *
  * Shared code is written against this vocabulary: fixed-width integers, float3
  * with dot/cross/min/max, make_float3, float4 with make_float4, float2 with
- * make_float2, scalar clamp/sqrt/sin/cos/acos/atan2/floor, as_uint/as_float,
+ * make_float2, scalar clamp/sqrt/sin/cos/acos/atan2/floor/pow, as_uint/as_float,
  * and WF_GLOBAL for the address space of scene buffers. On the device these are
  * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
  * else belongs here. */
@@ -17,9 +17,9 @@ typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_INLINE inline
+#define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
-#define make_float2(x, y) ((float2)((x), (y)))
 #define WF_DEVICE_BEGIN
 #define WF_DEVICE_END
 WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
@@ -35,6 +35,8 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 #define WF_INLINE inline
 
 namespace wf_compat {
+using float2 = glm::vec2;
+inline float2 make_float2(float x, float y) { return float2(x, y); }
 using float3 = glm::vec3;
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
 using float4 = glm::vec4;
@@ -53,10 +55,8 @@ using glm::cross;
 using glm::dot;
 using std::fabs; /* its float overload, beside the float3 one above */
 using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
-/* float2, and the float overloads of the math built-ins that the lights use
- * (never the double ones that unqualified calls could otherwise find). */
-using float2 = glm::vec2;
-inline float2 make_float2(float x, float y) { return float2(x, y); }
+/* The float overloads of the math built-ins that shared code uses (never the
+ * double ones that unqualified calls could otherwise find). */
 inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); }
 using std::acos;
 using std::atan2;
@@ -64,6 +64,7 @@ using std::cos;
 using std::floor;
 using std::sin;
 using std::sqrt;
+using std::pow;
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

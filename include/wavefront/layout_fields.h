@@ -7,7 +7,7 @@
 
 #define WF_LAYOUT_STRUCTS(X) \
     X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
-    X(Environment) X(PunctualLight)
+    X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
@@ -29,6 +29,11 @@
     X(Environment, sin_rotation) X(Environment, width) X(Environment, height)                     \
     X(PunctualLight, position) X(PunctualLight, type) X(PunctualLight, direction)                 \
     X(PunctualLight, range) X(PunctualLight, intensity) X(PunctualLight, cos_outer)               \
-    X(PunctualLight, cos_inner)
+    X(PunctualLight, cos_inner)                                                                   \
+    X(TextureInfo, offset) X(TextureInfo, width) X(TextureInfo, height) X(TextureInfo, flags)     \
+    X(TextureInfo, wrap_s) X(TextureInfo, wrap_t) X(TextureInfo, channels)                        \
+    X(TextureRef, texture) X(TextureRef, texcoord) X(TextureRef, transform)                       \
+    X(MaterialTextureParams, normal_scale) X(MaterialTextureParams, alpha_mode)                   \
+    X(MaterialTextureParams, alpha_cutoff) X(MaterialTextureParams, base_alpha)
 
 #endif /* WAVEFRONT_LAYOUT_FIELDS_H */

@@ -55,6 +55,58 @@ typedef struct Material {
     float specular;      /* in [0, 1]; 0 leaves a plain Lambertian surface */
 } Material;
 
+/* A texture as the kernels sample it (kernels/materials/texture.h). Texels
+ * are RGBA8 packed in one uint32 each (R in the low byte), rows from the top
+ * of the image down, `width * height` of them from `offset` in the scene's one
+ * texel buffer. Several TextureInfos may share texels (one image under two
+ * samplers or colour spaces). */
+#define WF_TEXTURE_SRGB 1u    /* RGB are sRGB-encoded: decoded per texel before filtering */
+#define WF_TEXTURE_NEAREST 2u /* the sampler's magFilter is NEAREST: no bilinear filtering */
+
+#define WF_WRAP_REPEAT 10497u /* glTF sampler wrap modes, with glTF's (GL's) numbers */
+#define WF_WRAP_CLAMP_TO_EDGE 33071u
+#define WF_WRAP_MIRRORED_REPEAT 33648u
+
+typedef struct TextureInfo {
+    uint32_t offset;   /* first texel in the texel buffer */
+    uint32_t width;    /* >= 1 */
+    uint32_t height;   /* >= 1 */
+    uint32_t flags;    /* WF_TEXTURE_* */
+    uint32_t wrap_s;   /* WF_WRAP_*, along u (image x) */
+    uint32_t wrap_t;   /* WF_WRAP_*, along v (image y, down) */
+    uint32_t channels; /* the source image's: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA */
+    uint32_t pad;
+} TextureInfo;
+
+/* How a material reads one texture: which one, with which texture coordinate
+ * set, through KHR_texture_transform's affine map, applied first:
+ *   u' = transform[0] u + transform[1] v + transform[2]
+ *   v' = transform[3] u + transform[4] v + transform[5] */
+typedef struct TextureRef {
+    int32_t texture;   /* index into the TextureInfo buffer, or -1: no texture */
+    uint32_t texcoord; /* 0: TEXCOORD_0, 1: TEXCOORD_1 */
+    float transform[6];
+} TextureRef;
+
+/* The texture slots of a material: the TextureRef buffer holds
+ * WF_TEXTURE_SLOTS entries per material, material * WF_TEXTURE_SLOTS + slot. */
+#define WF_TEXTURE_BASE_COLOR 0u         /* sRGB; RGB times base_color, A is alpha (linear) */
+#define WF_TEXTURE_METALLIC_ROUGHNESS 1u /* linear; B times metallic, G times roughness */
+#define WF_TEXTURE_NORMAL 2u             /* linear; tangent-space normal, 2 c - 1 */
+#define WF_TEXTURE_EMISSIVE 3u           /* sRGB; RGB times emission */
+#define WF_TEXTURE_SLOTS 4u
+
+#define WF_ALPHA_OPAQUE 0u /* alpha ignored */
+#define WF_ALPHA_MASK 1u   /* surface absent where alpha < alpha_cutoff */
+
+/* Per material, beside its TextureRefs: what modulates the sampled values. */
+typedef struct MaterialTextureParams {
+    float normal_scale;    /* glTF normalTexture.scale: scales the normal's x and y */
+    uint32_t alpha_mode;   /* WF_ALPHA_*; glTF BLEND is loaded as MASK (host/gltf_textures.cpp) */
+    float alpha_cutoff;    /* for WF_ALPHA_MASK */
+    float base_alpha;      /* baseColorFactor's alpha, times the texture's */
+} MaterialTextureParams;
+
 /* The kinds of light next-event estimation chooses among. */
 #define WF_LIGHT_TRIANGLE 0u    /* an emissive triangle */
 #define WF_LIGHT_PUNCTUAL 1u    /* a KHR_lights_punctual light: a delta light */
