@@ -1,11 +1,9 @@
 // test_cli.cpp — the `wavefront` executable as a user meets it: exit codes,
 // one-line errors that name the thing at fault, and the files it writes.
-#include <sys/wait.h>
 
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,11 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct ProcessResult {
-    int exit_code = -1;
-    std::string out, err;
-};
-
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -35,17 +28,11 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    ProcessResult run(const std::string& args) const {
-        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command =
-            std::string("'") + WF_BINARY + "' " + args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-        const int status = std::system(command.c_str());
-        return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(out), test::read_file(err)};
-    }
+    test::ProcessResult run(const std::string& args) const { return test::run_wavefront(args, dir_.string()); }
 
     // A bad invocation: exit code 2 and exactly one line on stderr containing `names`.
     void expect_rejected(const std::string& args, const std::string& names) const {
-        const ProcessResult r = run(args);
+        const test::ProcessResult r = run(args);
         EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
         EXPECT_NE(r.err.find(names), std::string::npos) << args << ": '" << r.err << "' should name '" << names << "'";
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": '" << r.err << "'";
@@ -61,7 +48,7 @@ protected:
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 
 TEST_F(Cli, DevicesListsTheCpu) {
-    const ProcessResult r = run("devices");
+    const test::ProcessResult r = run("devices");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("type cpu"), std::string::npos) << r.out;
 }
@@ -95,10 +82,10 @@ TEST_F(Cli, BadScenesAreRejectedByName) {
 }
 
 TEST_F(Cli, RendersPngAndExrWithMetadata) {
-    const ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
+    const test::ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
     ASSERT_EQ(png.exit_code, 0) << png.err;
     EXPECT_NE(png.out.find("non-finite samples 0"), std::string::npos) << png.out;
-    const ProcessResult exr = run("render " + kCornell + " --width 32 --spp 2 --seed 5 -o " + path("cornell.exr"));
+    const test::ProcessResult exr = run("render " + kCornell + " --width 32 --spp 2 --seed 5 -o " + path("cornell.exr"));
     ASSERT_EQ(exr.exit_code, 0) << exr.err;
 
     auto in = OIIO::ImageInput::open(path("cornell.png"));
@@ -119,7 +106,7 @@ TEST_F(Cli, RendersPngAndExrWithMetadata) {
 TEST_F(Cli, ReportsErrorAgainstTimeAsCsv) {
     const std::string small = "render " + kCornell + " --width 24 --height 24 ";
     ASSERT_EQ(run(small + "--spp 64 -o " + path("ref.exr")).exit_code, 0);
-    const ProcessResult r = run(small + "--spp 16 --reference " + path("ref.exr") + " --report " + path("r.csv") +
+    const test::ProcessResult r = run(small + "--spp 16 --reference " + path("ref.exr") + " --report " + path("r.csv") +
                                 " -o " + path("x.exr"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::string csv = test::read_file(path("r.csv"));
@@ -206,14 +193,14 @@ TEST_F(Cli, EnvironmentFlagsLightAScene) {
     write_image(path("sky.exr"), map, ImageMetadata{});
     const std::string box = WF_SOURCE_DIR "/../shared/scenes-real/Box/Box.gltf";
     const std::string small = "render '" + box + "' --width 16 --height 16 --spp 2 ";
-    const ProcessResult lit =
+    const test::ProcessResult lit =
         run(small + "--env " + path("sky.exr") + " --env-rotate -30 --env-scale 2 -o " + path("lit.exr"));
     ASSERT_EQ(lit.exit_code, 0) << lit.err;
     EXPECT_NE(lit.out.find("an environment"), std::string::npos) << lit.out;
     EXPECT_EQ(lit.err.find("no light"), std::string::npos) << lit.err;
 
     // Without --env the box has no light: it is lit all the same, and says so.
-    const ProcessResult unlit = run(small + "-o " + path("unlit.exr"));
+    const test::ProcessResult unlit = run(small + "-o " + path("unlit.exr"));
     ASSERT_EQ(unlit.exit_code, 0) << unlit.err;
     EXPECT_NE(unlit.err.find("no light"), std::string::npos) << unlit.err;
     const Image image = read_image(path("unlit.exr"));

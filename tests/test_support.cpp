@@ -1,11 +1,14 @@
 // test_support.cpp — see test_support.h.
 #include "test_support.h"
 
+#include <sys/wait.h>
+
 #include "kernel_program.h"
 #include "path_pool.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -113,6 +116,13 @@ std::string read_file(const std::string& path) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir) {
+    const std::string out = scratch_dir + "/stdout.txt", err = scratch_dir + "/stderr.txt";
+    const std::string command = std::string("'") + WF_BINARY + "' " + args + " > '" + out + "' 2> '" + err + "'";
+    const int status = std::system(command.c_str());
+    return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
 }
 
 // ---------------------------------------------------------------------------

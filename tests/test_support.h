@@ -56,6 +56,15 @@ ChannelStats channel_stats(const Image& image, int channel);
 // The bytes of a file, for comparing two renders bit for bit.
 std::string read_file(const std::string& path);
 
+struct ProcessResult {
+    int exit_code = -1; // -1 when the process did not exit normally
+    std::string out, err;
+};
+
+// Runs the `wavefront` executable with `args` (shell words), as a user would,
+// capturing its output in files under `scratch_dir`.
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir);
+
 // ---------------------------------------------------------------------------
 // Added for test_stability.cpp.
 
