@@ -3,6 +3,8 @@
 // π · area · mean(Le), doubled when it emits from both faces.
 #include "device_scene.h"
 
+#include "device_buffer.h"
+
 #include <algorithm>
 
 #include "alias_table.h"
@@ -58,14 +60,6 @@ double environment_power(const EnvironmentMap& map, double scene_radius) {
     return pi * scene_radius * scene_radius * radiance_integral;
 }
 
-template <class T> cl::Buffer upload(const cl::Context& context, const std::vector<T>& data, size_t& bytes) {
-    // OpenCL has no empty buffers; an unused one holds a single zeroed element.
-    std::vector<T> storage = data.empty() ? std::vector<T>(1, T{}) : data;
-    bytes += storage.size() * sizeof(T);
-    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, storage.size() * sizeof(T),
-                      storage.data());
-}
-
 } // namespace
 
 DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
@@ -101,6 +95,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         }
     }
     d.emissive_triangles = static_cast<uint32_t>(d.lights.size());
+    d.textures = make_device_texture_data(scene, bvh.order);
     const Bounds bounds = scene.bounds();
     d.scene_diameter = bounds.empty() ? 0.0f : glm::length(bounds.extent());
     const double radius = 0.5 * d.scene_diameter;
@@ -141,26 +136,30 @@ size_t DeviceSceneData::bytes() const {
     return nodes.size() * sizeof(BvhNode) + triangles.size() * sizeof(Triangle) +
            normals.size() * sizeof(TriangleNormals) + materials.size() * sizeof(Material) +
            lights.size() * sizeof(LightEntry) + punctual.size() * sizeof(PunctualLight) +
-           (environment ? (environment->texels.size() + environment->distribution.size()) * sizeof(float) : 0);
+           (environment ? (environment->texels.size() + environment->distribution.size()) * sizeof(float) : 0) +
+           textures.bytes();
 }
 
 size_t DeviceSceneData::largest_buffer_bytes() const {
     return std::max({nodes.size() * sizeof(BvhNode), triangles.size() * sizeof(Triangle),
                      normals.size() * sizeof(TriangleNormals), materials.size() * sizeof(Material),
                      lights.size() * sizeof(LightEntry),
-                     environment ? environment->texels.size() * sizeof(float) : size_t{0}});
+                     environment ? environment->texels.size() * sizeof(float) : size_t{0},
+                     textures.texels.size() * sizeof(uint32_t)});
 }
 
 DeviceScene upload_scene(const cl::Context& context, const DeviceSceneData& data) {
     DeviceScene s;
-    s.nodes = upload(context, data.nodes, s.bytes);
-    s.triangles = upload(context, data.triangles, s.bytes);
-    s.normals = upload(context, data.normals, s.bytes);
-    s.materials = upload(context, data.materials, s.bytes);
-    s.lights = upload(context, data.lights, s.bytes);
-    s.punctual = upload(context, data.punctual, s.bytes);
+    s.nodes = upload_read_only(context, data.nodes, s.bytes);
+    s.triangles = upload_read_only(context, data.triangles, s.bytes);
+    s.normals = upload_read_only(context, data.normals, s.bytes);
+    s.materials = upload_read_only(context, data.materials, s.bytes);
+    s.lights = upload_read_only(context, data.lights, s.bytes);
+    s.punctual = upload_read_only(context, data.punctual, s.bytes);
     s.environment = upload_environment(context, data.environment ? *data.environment : constant_environment(0.0f));
     s.bytes += s.environment.bytes;
+    s.textures = upload_textures(context, data.textures);
+    s.bytes += s.textures.bytes;
     s.light_count = static_cast<uint32_t>(data.lights.size());
     s.environment_light = data.environment_light;
     s.scene_diameter = data.scene_diameter;

@@ -11,6 +11,7 @@
 #include <CL/opencl.hpp>
 
 #include "bvh_builder.h"
+#include "device_textures.h"
 #include "environment_map.h"
 #include "scene.h"
 #include "wavefront/scene_types.h"
@@ -24,6 +25,7 @@ struct DeviceSceneData {
     std::vector<Material> materials;
     std::vector<PunctualLight> punctual;
     std::shared_ptr<const EnvironmentMap> environment;
+    DeviceTextureData textures;
     std::vector<LightEntry> lights; // every light of positive power: triangles, punctual, environment
     uint32_t emissive_triangles = 0;
     uint32_t environment_light = WF_NO_LIGHT; // its entry in `lights`
@@ -39,6 +41,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh);
 struct DeviceScene {
     cl::Buffer nodes, triangles, normals, materials, lights, punctual;
     DeviceEnvironment environment; // a one-element placeholder when the scene has none
+    DeviceTextures textures;
     uint32_t light_count = 0;
     uint32_t environment_light = WF_NO_LIGHT;
     float scene_diameter = 0.0f;

@@ -1,7 +1,7 @@
-// device_textures.h — a scene's textures and its materials' texture
-// references as the kernels read them (kernels/materials/texture.h), and
-// their upload. Kept apart from device_scene.h so the two can be wired
-// together by whoever adds texturing to the shading stages.
+// device_textures.h — a scene's textures, its materials' texture references
+// and its per-corner texture coordinates and tangents, as the kernels read
+// them (kernels/materials/texture.h); and their upload. Part of the device
+// scene (device_scene.h).
 #pragma once
 
 #include <vector>
@@ -18,14 +18,17 @@ struct DeviceTextureData {
     std::vector<uint32_t> texels;                 // RGBA8
     std::vector<TextureRef> refs;                 // WF_TEXTURE_SLOTS per material, in material order
     std::vector<MaterialTextureParams> params;    // one per material
+    std::vector<TriangleTexcoords> texcoords;     // per triangle in BVH order; empty without textures
+    std::vector<TriangleTangents> tangents;       // likewise
 
     size_t bytes() const;
 };
 
-DeviceTextureData make_device_texture_data(const Scene& scene);
+// `triangle_order`: the scene's triangle index at each BVH position.
+DeviceTextureData make_device_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_order);
 
 struct DeviceTextures {
-    cl::Buffer infos, texels, refs, params; // never empty: an unused one holds one zeroed element
+    cl::Buffer infos, texels, refs, params, texcoords, tangents; // never empty (device_buffer.h)
     size_t bytes = 0;                       // device memory held by the buffers above
 };
 

@@ -11,6 +11,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "device_buffer.h"
 #include "errors.h"
 
 namespace wf {
@@ -141,15 +142,8 @@ void light_unlit_scene(Scene& scene) {
 DeviceEnvironment upload_environment(const cl::Context& context, const EnvironmentMap& map) {
     DeviceEnvironment d;
     d.header = map.header;
-    // OpenCL has no empty buffers: a constant map's tables are one unused float.
-    const auto upload = [&](const std::vector<float>& data) {
-        std::vector<float> storage = data.empty() ? std::vector<float>(1, 0.0f) : data;
-        d.bytes += storage.size() * sizeof(float);
-        return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, storage.size() * sizeof(float),
-                          storage.data());
-    };
-    d.texels = upload(map.texels);
-    d.distribution = upload(map.distribution);
+    d.texels = upload_read_only(context, map.texels, d.bytes);
+    d.distribution = upload_read_only(context, map.distribution, d.bytes);
     return d;
 }
 

@@ -12,6 +12,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <numeric>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -386,7 +387,10 @@ TEST(TextureGltf, DamagedHelmetLoadsFiveEmbeddedJpegs) {
     EXPECT_GT(base, 0.05);
     EXPECT_LT(base, 0.9);
     EXPECT_NEAR(normal, 0.5, 0.1); // tangent-space x centred on 0
-    const DeviceTextureData data = make_device_texture_data(scene);
+    std::vector<uint32_t> order(scene.triangle_count());
+    std::iota(order.begin(), order.end(), 0u);
+    const DeviceTextureData data = make_device_texture_data(scene, order);
+    EXPECT_EQ(data.texcoords.size(), scene.triangle_count());
     EXPECT_EQ(data.refs.size(), scene.materials.size() * WF_TEXTURE_SLOTS);
     test::report_measured("DamagedHelmet: 4 textures of 2048x2048 in " + std::to_string(data.bytes()) +
                           " bytes (RGBA8), base colour mean red " + std::to_string(base));

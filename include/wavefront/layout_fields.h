@@ -7,13 +7,16 @@
 
 #define WF_LAYOUT_STRUCTS(X) \
     X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
-    X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)
+    X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)  \
+    X(TriangleTexcoords) X(TriangleTangents)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
     X(Triangle, v0) X(Triangle, material) X(Triangle, v1) X(Triangle, light) X(Triangle, v2)      \
     X(Triangle, mesh)                                                                             \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
+    X(TriangleTexcoords, uv0) X(TriangleTexcoords, uv1)                                           \
+    X(TriangleTangents, t0) X(TriangleTangents, t1) X(TriangleTangents, t2)                       \
     X(Material, base_color) X(Material, flags) X(Material, emission) X(Material, metallic)       \
     X(Material, roughness) X(Material, transmission) X(Material, ior) X(Material, specular)        \
     X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, index) X(LightEntry, pmf)       \

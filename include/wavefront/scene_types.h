@@ -40,6 +40,20 @@ typedef struct TriangleNormals {
     float pad2;
 } TriangleNormals;
 
+/* Per-corner texture coordinates and tangents, in BVH order beside the
+ * Triangle buffer; only scenes with textures upload them. A tangent's w is the
+ * handedness: bitangent = cross(n, t) w. */
+typedef struct TriangleTexcoords {
+    float uv0[6]; /* TEXCOORD_0 of corners 0, 1, 2 */
+    float uv1[6]; /* TEXCOORD_1 */
+} TriangleTexcoords;
+
+typedef struct TriangleTangents {
+    float t0[4];
+    float t1[4];
+    float t2[4];
+} TriangleTangents;
+
 #define WF_MATERIAL_DOUBLE_SIDED 1u
 
 /* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior and
