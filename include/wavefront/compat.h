@@ -2,9 +2,10 @@
  * the kernels (OpenCL C 1.2). Shared device code sits between WF_DEVICE_BEGIN
  * and WF_DEVICE_END.
  *
- * Shared code is written against this vocabulary: fixed-width integers, float3
- * with dot/cross/min/max, make_float3, float4 with make_float4, as_uint/as_float,
- * and WF_GLOBAL for the address space of scene buffers. On the device these are
+ * Shared code is written against this vocabulary: fixed-width integers, float2
+ * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
+ * with make_float4, as_uint/as_float, the scalar sqrt/sin/cos/copysign, and
+ * WF_GLOBAL for the address space of scene buffers. On the device these are
  * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
  * else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
@@ -16,6 +17,7 @@ typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_INLINE inline
+#define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define WF_DEVICE_BEGIN
@@ -33,6 +35,8 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 #define WF_INLINE inline
 
 namespace wf_compat {
+using float2 = glm::vec2;
+inline float2 make_float2(float x, float y) { return float2(x, y); }
 using float3 = glm::vec3;
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
 using float4 = glm::vec4;
@@ -49,7 +53,12 @@ inline float3 max(float3 a, float3 b) { return float3(max(a.x, b.x), max(a.y, b.
 inline float3 fabs(float3 v) { return glm::abs(v); }
 using glm::cross;
 using glm::dot;
+using glm::normalize;
 using std::fabs; /* its float overload, beside the float3 one above */
+using std::copysign;
+using std::cos;
+using std::sin;
+using std::sqrt;
 using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
 } // namespace wf_compat
 
