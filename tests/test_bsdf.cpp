@@ -109,7 +109,7 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
     for (int i = 0; i < pieces; ++i) {
         const double lo = a + (b - a) * i / pieces, hi = a + (b - a) * (i + 1) / pieces;
         const double flo = f(lo), fm = f(0.5 * (lo + hi)), fhi = f(hi);
-        sum += adaptive_simpson(f, lo, hi, flo, fm, fhi, (hi - lo) / 6.0 * (flo + 4.0 * fm + fhi), eps / pieces, 14);
+        sum += adaptive_simpson(f, lo, hi, flo, fm, fhi, (hi - lo) / 6.0 * (flo + 4.0 * fm + fhi), eps / pieces, 10);
     }
     return sum;
 }
@@ -139,9 +139,9 @@ std::vector<double> cell_probabilities(const BsdfParams& p, vec3 wo) {
                         const vec3 wi(float(s * std::cos(phi)), float(s * std::sin(phi)), float(c));
                         return double(wf_device::bsdf_pdf(&p, wo, wi));
                     },
-                    p0, p1, 1e-9, 2);
+                    p0, p1, 1e-8, 2);
             };
-            out[i * kPhiCells + j] = integrate(inner, c0, c1, 1e-8, 4);
+            out[i * kPhiCells + j] = integrate(inner, c0, c1, 2e-7, 2);
         }
     }
     return out;
