@@ -37,52 +37,64 @@ double bonferroni_threshold(double alpha, size_t comparisons) {
 
 double regularized_gamma_q(double a, double x) {
     if (x <= 0.0) return 1.0;
-    const double log_prefactor = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1.0) { // P by its series, Q = 1 - P
+    const double log_prefix = a * std::log(x) - x - std::lgamma(a);
+    if (x < a + 1.0) {
+        // P(a, x) = e^-x x^a / Γ(a + 1) Σ x^n / ((a + 1)...(a + n)).
         double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 1000 && std::fabs(term) > 1e-16 * std::fabs(sum); ++n) {
+        for (int n = 1; n < 100000; ++n) {
             term *= x / (a + n);
             sum += term;
+            if (std::fabs(term) < std::fabs(sum) * 1e-16) break;
         }
-        return std::max(0.0, 1.0 - sum * std::exp(log_prefactor));
+        return std::max(0.0, 1.0 - sum * std::exp(log_prefix));
     }
-    const double tiny = 1e-300; // Q by its continued fraction (modified Lentz)
+    // Q(a, x) = e^-x x^a / Γ(a) · 1/(x + 1 - a - 1(1 - a)/(x + 3 - a - ...)).
+    const double tiny = 1e-300;
     double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int n = 1; n < 1000; ++n) {
-        const double an = -n * (n - a);
+    for (int i = 1; i < 100000; ++i) {
+        const double an = -i * (i - a);
         b += 2.0;
         d = an * d + b;
-        d = std::fabs(d) < tiny ? tiny : d;
+        if (std::fabs(d) < tiny) d = tiny;
         c = b + an / c;
-        c = std::fabs(c) < tiny ? tiny : c;
+        if (std::fabs(c) < tiny) c = tiny;
         d = 1.0 / d;
         const double delta = d * c;
         h *= delta;
         if (std::fabs(delta - 1.0) < 1e-16) break;
     }
-    return std::exp(log_prefactor) * h;
+    return std::exp(log_prefix) * h;
 }
 
-double chi_square_p_value(const std::vector<double>& observed, const std::vector<double>& expected,
-                          double min_expected) {
-    double chi2 = 0.0, pooled_observed = 0.0, pooled_expected = 0.0;
-    size_t cells = 0;
+ChiSquare chi_square_test(const std::vector<double>& observed, const std::vector<double>& expected,
+                          double min_expected, double stray_fraction) {
+    ChiSquare result;
+    double total = 0.0;
+    for (double o : observed) total += o;
+    double pooled_observed = 0.0, pooled_expected = 0.0;
+    int cells = 0;
     for (size_t i = 0; i < observed.size(); ++i) {
-        if (expected[i] <= 0.0 && observed[i] > 0.0) return 0.0;
+        if (expected[i] < 1e-9 && observed[i] > stray_fraction * total) {
+            result.p_value = 0.0;
+            return result;
+        }
         if (expected[i] < min_expected) {
             pooled_observed += observed[i];
             pooled_expected += expected[i];
-        } else {
-            chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-            ++cells;
+            continue;
         }
-    }
-    if (pooled_expected >= min_expected) {
-        chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+        const double diff = observed[i] - expected[i];
+        result.statistic += diff * diff / expected[i];
         ++cells;
     }
-    if (cells < 2) return 1.0;
-    return regularized_gamma_q(0.5 * double(cells - 1), 0.5 * chi2);
+    if (pooled_expected > 0.0 || pooled_observed > 0.0) {
+        const double diff = pooled_observed - pooled_expected;
+        result.statistic += diff * diff / std::max(pooled_expected, 1e-9);
+        ++cells;
+    }
+    result.dof = cells - 1;
+    result.p_value = result.dof > 0 ? regularized_gamma_q(0.5 * result.dof, 0.5 * result.statistic) : 1.0;
+    return result;
 }
 
 } // namespace wf::test

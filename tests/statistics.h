@@ -19,16 +19,22 @@ double max_block_z(const FilmReadout& a, const FilmReadout& b, uint32_t block);
 double bonferroni_threshold(double alpha, size_t comparisons);
 
 // Q(a, x) = Γ(a, x) / Γ(a), the regularized upper incomplete gamma function
-// (series for x < a + 1, else Lentz's continued fraction; Numerical Recipes 6.2).
+// (series below a + 1, Lentz's continued fraction above; Numerical Recipes
+// 6.2), accurate to ~1e-14 for a > 0, x >= 0.
 double regularized_gamma_q(double a, double x);
 
-// Pearson's chi-square test that `observed` counts come from the distribution
-// whose `expected` counts (same total) are given, as pbrt-v4 and Mitsuba test
-// samplers: cells expected below `min_expected` are pooled into one (dropped
-// if the pool stays below it), and the statistic is referred to chi-square
-// with (cells - 1) degrees of freedom. Returns the p-value; 0 when a cell
-// with no expectation at all received samples.
-double chi_square_p_value(const std::vector<double>& observed, const std::vector<double>& expected,
-                          double min_expected = 5.0);
+// Pearson's chi-square test of observed counts against expected counts, with
+// the cells whose expectation is below `min_expected` pooled into one (as in
+// pbrt-v4's and Mitsuba's BSDF tests). The p-value is Q(dof / 2, chi² / 2).
+// A cell expected to be empty (below 1e-9) that holds more than
+// `stray_fraction` of all observations makes the p-value 0: the sampler puts
+// samples where its density says none can be.
+struct ChiSquare {
+    double statistic = 0.0;
+    int dof = 0;
+    double p_value = 1.0;
+};
+ChiSquare chi_square_test(const std::vector<double>& observed, const std::vector<double>& expected,
+                          double min_expected = 5.0, double stray_fraction = 1e-5);
 
 } // namespace wf::test

@@ -154,7 +154,7 @@ TEST(EnvironmentSampling, ChiSquareAgainstPdf) {
             const int j = std::min(np - 1, std::max(0, int((phi + kPi) / (2 * kPi) * np)));
             observed[size_t(i) * np + j] += 1.0;
         }
-        const double p_value = test::chi_square_p_value(observed, expected);
+        const double p_value = test::chi_square_test(observed, expected).p_value;
         test::report_measured("environment chi-square " + c.name + ": p = " + std::to_string(p_value) +
                               ", unusable samples " + std::to_string(unusable));
         EXPECT_GT(p_value, 0.01 / 4) << c.name; // Šidák-like split of 1% over the four maps

@@ -2,12 +2,12 @@
  * the kernels (OpenCL C 1.2). Shared device code sits between WF_DEVICE_BEGIN
  * and WF_DEVICE_END.
  *
- * Shared code is written against this vocabulary: fixed-width integers, float3
- * with dot/cross/min/max, make_float3, float4 with make_float4, float2 with
- * make_float2, scalar clamp/sqrt/sin/cos/acos/atan2/floor/pow, as_uint/as_float,
- * and WF_GLOBAL for the address space of scene buffers. On the device these are
- * the OpenCL built-ins; on the host they map onto GLM and <cstring>. Nothing
- * else belongs here. */
+ * Shared code is written against this vocabulary: fixed-width integers, float2
+ * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
+ * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, acos,
+ * atan2, floor, pow and copysign, and WF_GLOBAL for the address space of scene
+ * buffers. On the device these are the OpenCL built-ins; on the host they map
+ * onto GLM, <cmath> and <cstring>. Nothing else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
 #define WAVEFRONT_COMPAT_H
 
@@ -53,6 +53,7 @@ inline float3 max(float3 a, float3 b) { return float3(max(a.x, b.x), max(a.y, b.
 inline float3 fabs(float3 v) { return glm::abs(v); }
 using glm::cross;
 using glm::dot;
+using glm::normalize;
 using std::fabs; /* its float overload, beside the float3 one above */
 using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
 /* The float overloads of the math built-ins that shared code uses (never the
@@ -60,11 +61,12 @@ using std::nextafter; /* and INFINITY from <cmath>: as in OpenCL C */
 inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); }
 using std::acos;
 using std::atan2;
+using std::copysign;
 using std::cos;
 using std::floor;
+using std::pow;
 using std::sin;
 using std::sqrt;
-using std::pow;
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

@@ -1,0 +1,278 @@
+/* bsdf.h — the BSDF of a glTF 2.0 material (metallic-roughness, with
+ * KHR_materials_transmission and KHR_materials_ior), as the shade stage
+ * evaluates and samples it; shared by the kernels and the host.
+ *
+ * Frame and directions: everything is in the local shading frame, z = the
+ * shading normal. wo (towards the previous vertex, the camera side) and wi
+ * (towards the light) are unit and point away from the surface. An opaque
+ * material (transmission = 0) needs wo.z > 0 (the caller flips the frame) and
+ * is black otherwise; a transmissive one takes wo on either side, wo.z < 0
+ * meaning the ray arrived from inside.
+ *
+ * The material, glTF's mix(dielectric, metal, metallic) (spec Appendix B):
+ *  - the interface: GGX microfacets (bsdf/microfacet.h), alpha = roughness^2,
+ *    which reflect with R(c) = (1 - metallic) F_d(c) + metallic Schlick(base, c)
+ *    and, where transmission > 0, transmit with
+ *    T(c) = (1 - metallic) transmission base (1 - F_d(c)), c = wo.wm.
+ *    F_d is the dielectric layer's Fresnel: Schlick with F0 = ((ior-1)/(ior+1))^2
+ *    (0.04 at the default ior 1.5) for an opaque material, as glTF's model has
+ *    it, and the exact dielectric reflectance (bsdf/fresnel.h) for a
+ *    transmissive one, which needs the inside and total internal reflection.
+ *    Reflection is Cook-Torrance, R D G2 / (4 |wo.z| |wi.z|); transmission is
+ *    Walter et al. 2007, T D G2 |wi.wm| |wo.wm| / ((wi.wm + wo.wm/eta')^2
+ *    |wi.z| |wo.z|) / eta'^2, eta' = ior entering (wo.z > 0) and 1/ior leaving.
+ *    The last 1/eta'^2 makes it a BTDF for radiance (camera paths): radiance
+ *    entering a denser medium is concentrated (pbrt-v4's TransportMode::
+ *    Radiance). With it the BTDF obeys f(wo,wi)/n_o^2 = f(wi,wo)/n_i^2, n_o and
+ *    n_i the indices on the sides of wo and wi (Veach's thesis, 5.14); the white furnace of a clear
+ *    dielectric returns 1 only once the eta'^2 is multiplied back.
+ *  - the diffuse base, outside only: (1 - metallic)(1 - transmission) base / pi
+ *    (1 - F_d(wo.z)) (1 - F_d(wi.z)). glTF's reference code weighs the diffuse
+ *    by 1 - F(wo.wh); that product is not bounded by 1 - F(wo.z) and makes
+ *    white materials reflect more than they receive at grazing angles (albedo
+ *    1.7 at wo.z = 0.05 for a smooth one), so the two directions' Fresnel
+ *    transmittances are used instead: reciprocal, and below 1 - F(wo.z).
+ *
+ * The smooth limit: below alpha = WF_BSDF_DELTA_ALPHA (roughness 0.0316), or
+ * for a transmissive material of ior exactly 1, the interface is a Dirac
+ * mirror and a Dirac refraction (Snell), chosen in proportion to R and T at
+ * wo.z. bsdf_eval and bsdf_pdf never include Dirac lobes; bsdf_sample marks
+ * them with delta = 1, f = weight / |wi.z| and pdf = the probability of having
+ * chosen that lobe, so that f |wi.z| / pdf is the path weight: never evaluate
+ * or MIS-weigh them. bsdf_is_delta: every lobe is Dirac (NEE is useless).
+ *
+ * Sampling, one sample of a mixture: the interface with probability p_int, in
+ * proportion to the luminances of R(wo.z) + T(wo.z) against the diffuse
+ * (1 - metallic)(1 - transmission) base (1 - F_d(wo.z)), at least
+ * WF_BSDF_MIN_INTERFACE_PROBABILITY while a diffuse lobe is there and 1 where
+ * none is. The interface samples a GGX visible normal (Heitz 2018) and then
+ * reflects or refracts in proportion to the luminances of R and T at wo.wm.
+ * bsdf_pdf is the density of that whole procedure (lobe choices included)
+ * over the non-Dirac lobes, and a non-Dirac sample returns bsdf_eval and
+ * bsdf_pdf of the whole mixture (one-sample MIS over the lobes, balance
+ * heuristic). A sample that leaves no valid direction (a reflection below
+ * the horizon, a refraction blocked by total internal reflection) returns
+ * pdf = 0: the path ends, and that probability is simply lost. u: three
+ * uniforms in [0,1): u.x picks the lobes, u.y and u.z the direction. */
+#ifndef WF_BSDF_H
+#define WF_BSDF_H
+
+#include "wavefront/compat.h"
+#include "wavefront/path_state.h"
+#include "common/sampling.h"
+#include "bsdf/fresnel.h"
+#include "bsdf/microfacet.h"
+
+#define WF_BSDF_DELTA_ALPHA 1e-3f
+#define WF_BSDF_MIN_INTERFACE_PROBABILITY 0.05f
+
+WF_DEVICE_BEGIN
+
+typedef struct BsdfParams {
+    float3 base_color;
+    float metallic;
+    float roughness;    /* glTF's perceptual roughness; alpha = roughness^2 */
+    float transmission; /* KHR_materials_transmission */
+    float ior;          /* KHR_materials_ior, 1.5 by default */
+    uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
+} BsdfParams;
+
+typedef struct BsdfSample {
+    float3 wi;
+    float3 f;  /* without the cosine */
+    float pdf; /* solid angle; for a Dirac lobe the lobe's probability; 0: no sample */
+    int delta; /* a Dirac lobe was chosen */
+} BsdfSample;
+
+WF_INLINE float bsdf_luminance(float3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+WF_INLINE float3 bsdf_gray(float v) { return make_float3(v, v, v); }
+
+WF_INLINE int bsdf_interface_smooth(const BsdfParams* p) {
+    return p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA || (p->transmission > 0.0f && p->ior == 1.0f);
+}
+
+/* F_d, the dielectric layer's reflectance; cos_i < 0 from inside. */
+WF_INLINE float bsdf_layer_fresnel(const BsdfParams* p, float cos_i) {
+    return p->transmission > 0.0f ? fresnel_dielectric(cos_i, p->ior)
+                                  : fresnel_schlick_scalar(fresnel_f0(p->ior), cos_i);
+}
+
+WF_INLINE float3 bsdf_reflectance(const BsdfParams* p, float cos_i) {
+    return (1.0f - p->metallic) * bsdf_gray(bsdf_layer_fresnel(p, cos_i)) +
+           p->metallic * fresnel_schlick(p->base_color, cos_i);
+}
+
+WF_INLINE float3 bsdf_transmittance(const BsdfParams* p, float cos_i) {
+    if (!(p->transmission > 0.0f)) return bsdf_gray(0.0f);
+    return ((1.0f - p->metallic) * p->transmission * (1.0f - bsdf_layer_fresnel(p, cos_i))) * p->base_color;
+}
+
+WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
+    return ((1.0f - p->metallic) * (1.0f - p->transmission)) * p->base_color;
+}
+
+/* The probability that sampling chooses the interface rather than the diffuse lobe. */
+WF_INLINE float bsdf_interface_probability(const BsdfParams* p, float3 wo) {
+    const float e_diffuse =
+        wo.z > 0.0f ? bsdf_luminance(bsdf_diffuse_albedo(p)) * (1.0f - bsdf_layer_fresnel(p, wo.z)) : 0.0f;
+    if (!(e_diffuse > 0.0f)) return 1.0f;
+    const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
+    return max(e_interface / (e_interface + e_diffuse), WF_BSDF_MIN_INTERFACE_PROBABILITY);
+}
+
+/* The probability of reflecting rather than refracting, given R and T. */
+WF_INLINE float bsdf_reflect_probability(float3 r, float3 t) {
+    const float lr = bsdf_luminance(r), lt = bsdf_luminance(t);
+    return lr + lt > 0.0f ? lr / (lr + lt) : 1.0f;
+}
+
+/* wo refracted through the plane of normal n (either side), relative index
+ * eta; 0 on total internal reflection. */
+WF_INLINE int bsdf_refract(float3 wo, float3 n, float eta, float3* wt) {
+    float cos_i = dot(n, wo);
+    if (cos_i < 0.0f) {
+        eta = 1.0f / eta;
+        cos_i = -cos_i;
+        n = -n;
+    }
+    const float sin2_t = max(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1.0f) return 0;
+    const float cos_t = sqrt(1.0f - sin2_t);
+    *wt = -wo / eta + (cos_i / eta - cos_t) * n;
+    return 1;
+}
+
+/* The rough interface's f and, in *pdf, the density of sampling wi given that
+ * the interface was chosen. */
+WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+    *pdf = 0.0f;
+    const float cos_o = wo.z, cos_i = wi.z;
+    if (cos_o == 0.0f || cos_i == 0.0f) return bsdf_gray(0.0f);
+    const int reflect = cos_o * cos_i > 0.0f;
+    if (!reflect && !(p->transmission > 0.0f)) return bsdf_gray(0.0f);
+    const float etap = reflect ? 1.0f : (cos_o > 0.0f ? p->ior : 1.0f / p->ior);
+    float3 wm = wi * etap + wo;
+    const float len2 = dot(wm, wm);
+    if (!(len2 > 0.0f)) return bsdf_gray(0.0f);
+    wm = wm / sqrt(len2);
+    if (wm.z < 0.0f) wm = -wm;
+    const float dot_o = dot(wo, wm), dot_i = dot(wi, wm);
+    /* Microfacets seen from behind by either direction carry nothing. */
+    if (!(dot_o * cos_o > 0.0f) || !(dot_i * cos_i > 0.0f)) return bsdf_gray(0.0f);
+    const float alpha = p->roughness * p->roughness;
+    const float3 r = bsdf_reflectance(p, dot_o);
+    const float3 t = bsdf_transmittance(p, dot_o);
+    const float p_reflect = bsdf_reflect_probability(r, t);
+    const float d = ggx_d(wm, alpha);
+    const float g = ggx_g2(wo, wi, alpha);
+    const float pdf_wm = ggx_pdf_visible(wo, wm, alpha);
+    if (reflect) {
+        *pdf = p_reflect * pdf_wm / (4.0f * fabs(dot_o));
+        return r * (d * g / (4.0f * fabs(cos_o) * fabs(cos_i)));
+    }
+    const float denom = dot_i + dot_o / etap;
+    const float denom2 = denom * denom;
+    if (!(denom2 > 0.0f)) return bsdf_gray(0.0f);
+    *pdf = (1.0f - p_reflect) * pdf_wm * fabs(dot_i) / denom2;
+    return t * (d * g * fabs(dot_i * dot_o) / (denom2 * fabs(cos_i) * fabs(cos_o) * etap * etap));
+}
+
+WF_INLINE float bsdf_diffuse_pdf(const BsdfParams* p, float3 wi) {
+    if (!(wi.z > 0.0f)) return 0.0f;
+    return p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
+}
+
+/* f and pdf of the non-Dirac lobes together. */
+WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+    *pdf = 0.0f;
+    float3 f = bsdf_gray(0.0f);
+    if (!(p->transmission > 0.0f) && !(wo.z > 0.0f)) return f;
+    const float p_interface = bsdf_interface_probability(p, wo);
+    if (!bsdf_interface_smooth(p)) {
+        float pdf_interface;
+        f = bsdf_interface_eval(p, wo, wi, &pdf_interface);
+        *pdf = p_interface * pdf_interface;
+    }
+    const float3 albedo = bsdf_diffuse_albedo(p);
+    if (wo.z > 0.0f && wi.z > 0.0f && albedo.x + albedo.y + albedo.z > 0.0f) {
+        const float weight = (1.0f - bsdf_layer_fresnel(p, wo.z)) * (1.0f - bsdf_layer_fresnel(p, wi.z)) * WF_INV_PI;
+        f = f + albedo * weight;
+        *pdf += (1.0f - p_interface) * bsdf_diffuse_pdf(p, wi);
+    }
+    return f;
+}
+
+WF_INLINE float3 bsdf_eval(const BsdfParams* p, float3 wo, float3 wi) {
+    float pdf;
+    return bsdf_eval_pdf(p, wo, wi, &pdf);
+}
+
+WF_INLINE float bsdf_pdf(const BsdfParams* p, float3 wo, float3 wi) {
+    float pdf;
+    bsdf_eval_pdf(p, wo, wi, &pdf);
+    return pdf;
+}
+
+WF_INLINE int bsdf_is_delta(const BsdfParams* p) {
+    const float3 albedo = bsdf_diffuse_albedo(p);
+    return bsdf_interface_smooth(p) && !(albedo.x + albedo.y + albedo.z > 0.0f);
+}
+
+WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
+    BsdfSample s;
+    s.wi = make_float3(0.0f, 0.0f, 1.0f);
+    s.f = bsdf_gray(0.0f);
+    s.pdf = 0.0f;
+    s.delta = 0;
+    if (wo.z == 0.0f || (!(p->transmission > 0.0f) && !(wo.z > 0.0f))) return s;
+    const float p_interface = bsdf_interface_probability(p, wo);
+    if (u.x < p_interface) {
+        /* u.x / p_interface is uniform again: it picks reflection or refraction. */
+        const float u_choice = min(u.x / p_interface, 0x1.fffffep-1f);
+        if (bsdf_interface_smooth(p)) {
+            const float3 r = bsdf_reflectance(p, wo.z);
+            const float3 t = bsdf_transmittance(p, wo.z);
+            const float p_reflect = bsdf_reflect_probability(r, t);
+            if (u_choice < p_reflect) {
+                s.wi = make_float3(-wo.x, -wo.y, wo.z);
+                s.f = r / fabs(wo.z);
+                s.pdf = p_interface * p_reflect;
+            } else {
+                float3 wi;
+                if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
+                const float etap = wo.z > 0.0f ? p->ior : 1.0f / p->ior;
+                s.wi = wi;
+                s.f = t / (fabs(wi.z) * etap * etap);
+                s.pdf = p_interface * (1.0f - p_reflect);
+            }
+            s.delta = 1;
+            return s;
+        }
+        const float alpha = p->roughness * p->roughness;
+        const float3 wm = ggx_sample_visible(wo.z > 0.0f ? wo : -wo, alpha, make_float2(u.y, u.z));
+        const float dot_o = dot(wo, wm);
+        const float p_reflect = bsdf_reflect_probability(bsdf_reflectance(p, dot_o), bsdf_transmittance(p, dot_o));
+        float3 wi;
+        if (u_choice < p_reflect) {
+            wi = 2.0f * dot_o * wm - wo;
+            if (!(wi.z * wo.z > 0.0f)) return s;
+        } else {
+            if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
+        }
+        s.wi = wi;
+    } else {
+        const float2 ud = make_float2(u.y, u.z);
+        s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
+    }
+    float pdf;
+    const float3 f = bsdf_eval_pdf(p, wo, s.wi, &pdf);
+    if (!(pdf > 0.0f)) return s;
+    s.f = f;
+    s.pdf = pdf;
+    return s;
+}
+
+WF_DEVICE_END
+
+#endif /* WF_BSDF_H */
