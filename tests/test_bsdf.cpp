@@ -38,6 +38,7 @@ BsdfParams material(vec3 base, float metallic, float roughness, float transmissi
     p.roughness = roughness;
     p.transmission = transmission;
     p.ior = ior;
+    p.specular = 1.0f;
     p.hemisphere = hemisphere;
     return p;
 }
@@ -434,6 +435,7 @@ __kernel void bsdf_probe(__global const float* in, __global float* out) {
     p.roughness = a[4];
     p.transmission = a[5];
     p.ior = a[6];
+    p.specular = 1.0f;
     p.hemisphere = (uint)a[7];
     const float3 wo = (float3)(a[8], a[9], a[10]);
     const float3 wi = (float3)(a[11], a[12], a[13]);

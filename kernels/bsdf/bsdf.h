@@ -9,7 +9,8 @@
  * is black otherwise; a transmissive one takes wo on either side, wo.z < 0
  * meaning the ray arrived from inside.
  *
- * The material, glTF's mix(dielectric, metal, metallic) (spec Appendix B):
+ * The material, glTF's mix(dielectric, metal, metallic) (spec Appendix B),
+ * with KHR_materials_specular's factor scaling the dielectric layer's F_d:
  *  - the interface: GGX microfacets (bsdf/microfacet.h), alpha = roughness^2,
  *    which reflect with R(c) = (1 - metallic) F_d(c) + metallic Schlick(base, c)
  *    and, where transmission > 0, transmit with
@@ -44,8 +45,9 @@
  * Sampling, one sample of a mixture: the interface with probability p_int, in
  * proportion to the luminances of R(wo.z) + T(wo.z) against the diffuse
  * (1 - metallic)(1 - transmission) base (1 - F_d(wo.z)), at least
- * WF_BSDF_MIN_INTERFACE_PROBABILITY while a diffuse lobe is there and 1 where
- * none is. The interface samples a GGX visible normal (Heitz 2018) and then
+ * WF_BSDF_MIN_INTERFACE_PROBABILITY while a diffuse lobe is there, 1 where
+ * none is, and 0 where the interface neither reflects nor transmits (specular
+ * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
  * reflects or refracts in proportion to the luminances of R and T at wo.wm.
  * bsdf_pdf is the density of that whole procedure (lobe choices included)
  * over the non-Dirac lobes, and a non-Dirac sample returns bsdf_eval and
@@ -74,6 +76,7 @@ typedef struct BsdfParams {
     float roughness;    /* glTF's perceptual roughness; alpha = roughness^2 */
     float transmission; /* KHR_materials_transmission */
     float ior;          /* KHR_materials_ior, 1.5 by default */
+    float specular;     /* KHR_materials_specular's factor: scales F_d; 0 leaves a plain Lambertian base */
     uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
 } BsdfParams;
 
@@ -94,8 +97,8 @@ WF_INLINE int bsdf_interface_smooth(const BsdfParams* p) {
 
 /* F_d, the dielectric layer's reflectance; cos_i < 0 from inside. */
 WF_INLINE float bsdf_layer_fresnel(const BsdfParams* p, float cos_i) {
-    return p->transmission > 0.0f ? fresnel_dielectric(cos_i, p->ior)
-                                  : fresnel_schlick_scalar(fresnel_f0(p->ior), cos_i);
+    return p->specular * (p->transmission > 0.0f ? fresnel_dielectric(cos_i, p->ior)
+                                                 : fresnel_schlick_scalar(fresnel_f0(p->ior), cos_i));
 }
 
 WF_INLINE float3 bsdf_reflectance(const BsdfParams* p, float cos_i) {
@@ -118,6 +121,7 @@ WF_INLINE float bsdf_interface_probability(const BsdfParams* p, float3 wo) {
         wo.z > 0.0f ? bsdf_luminance(bsdf_diffuse_albedo(p)) * (1.0f - bsdf_layer_fresnel(p, wo.z)) : 0.0f;
     if (!(e_diffuse > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
+    if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
     return max(e_interface / (e_interface + e_diffuse), WF_BSDF_MIN_INTERFACE_PROBABILITY);
 }
 

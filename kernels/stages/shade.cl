@@ -4,8 +4,9 @@
  * if the scene has one, and ends the path; a hit on an emitter adds its
  * radiance; then, unless the path has reached --max-depth, one light sample is
  * prepared for intersect_shadow (next-event estimation, over every kind of
- * light) and the Lambertian BRDF chooses the continuation ray, which roulette
- * may end. --light-sampling decides which of the two techniques counts emitted
+ * light) and the material's BSDF (bsdf/bsdf.h) chooses the continuation ray,
+ * which roulette may end. A Dirac lobe (mirror, smooth glass) takes no light
+ * sample and passes pdf 0 on, so the emission its ray finds is not weighed. --light-sampling decides which of the two techniques counts emitted
  * light: BRDF sampling alone, NEE alone, or both weighted by the power
  * heuristic (MIS), so that no light is counted twice. Delta lights are found
  * by NEE alone, whatever the technique. */
@@ -14,7 +15,7 @@
 #include "common/bounce_layers.h"
 #include "common/queue_push.h"
 #include "common/sample_values.h"
-#include "bsdf/lambert.h"
+#include "bsdf/bsdf.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 
@@ -66,6 +67,34 @@ inline void add_radiance(PathState* path, const RenderParams* params, __global f
     add_to_bounce_layer(params, layers, layer_compensation, pixel, depth, radiance);
 }
 
+/* The local shading frame: z is the shading normal. */
+typedef struct ShadingFrame {
+    float3 x, y, z;
+} ShadingFrame;
+
+inline float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
+inline float3 from_local(const ShadingFrame* f, float3 v) { return v.x * f->x + v.y * f->y + v.z * f->z; }
+
+inline BsdfParams material_bsdf(__global const Material* m, uint hemisphere) {
+    BsdfParams p;
+    p.base_color = vload3(0, m->base_color);
+    p.metallic = m->metallic;
+    p.roughness = m->roughness;
+    p.transmission = m->transmission;
+    p.ior = m->ior;
+    p.specular = m->specular;
+    p.hemisphere = hemisphere;
+    return p;
+}
+
+/* A world direction the BSDF gave or evaluated, with its local z: it must
+ * leave on the side of the geometric surface that the shading normal says,
+ * else it would cross the surface where the two normals disagree (a leak). */
+inline bool same_side(float3 geometric_normal, float3 w, float local_z) {
+    const float g = dot(geometric_normal, w);
+    return (g > 0.0f && local_z > 0.0f) || (g < 0.0f && local_z < 0.0f);
+}
+
 inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                        __global const Triangle* triangles, __global const TriangleNormals* normals,
                        __global const Material* materials, __global const LightEntry* lights,
@@ -107,28 +136,34 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
-    const float3 albedo = vload3(0, m->base_color);
-    const float3 f = lambert_eval(albedo);
-    /* Both rays below leave on the side the ray arrived from: each is kept
-     * only where dot(geometric_normal, wi) > 0. */
-    const float3 origin = offset_ray_origin(s.position, s.position_error, s.geometric_normal, s.geometric_normal);
+    const BsdfParams bsdf = material_bsdf(m, params->hemisphere);
+    /* An opaque surface is shaded on the side the ray arrived from; a
+     * transmissive one keeps its front (counter-clockwise) side as +z, so
+     * that wo.z < 0 says the ray arrived from inside. */
+    const bool flip = bsdf.transmission > 0.0f && !s.front_face;
+    ShadingFrame frame;
+    frame.z = flip ? -s.shading_normal : s.shading_normal;
+    const float3 geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;
+    orthonormal_basis(frame.z, &frame.x, &frame.y);
+    const float3 wo = to_local(&frame, -direction);
     uint outcome = WF_SHADE_FINISHED;
 
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */
-    if (params->light_count > 0u) {
+    if (params->light_count > 0u && !bsdf_is_delta(&bsdf)) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
         const LightSample ls = sample_light(params, lights, triangles, materials, punctual, environment_texels,
                                             environment_distribution, s.position, u);
-        const float3 wi = ls.wi;
-        const float cos_surface = dot(s.shading_normal, wi);
+        const float3 wi = to_local(&frame, ls.wi);
         const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
-        if (counted && ls.pdf > 0.0f && cos_surface > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
-            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls.delta
-                                     ? power_heuristic(ls.pdf, lambert_pdf(s.shading_normal, wi, params->hemisphere))
-                                     : 1.0f;
-            const float3 contribution = throughput * f * ls.radiance * (cos_surface * weight / ls.pdf);
-            if (is_finite3(contribution)) {
+        float pdf_bsdf;
+        const float3 f = bsdf_eval_pdf(&bsdf, wo, wi, &pdf_bsdf);
+        if (counted && ls.pdf > 0.0f && same_side(geometric_normal, ls.wi, wi.z)) {
+            const float weight =
+                params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls.delta ? power_heuristic(ls.pdf, pdf_bsdf) : 1.0f;
+            const float3 contribution = throughput * f * ls.radiance * (fabs(wi.z) * weight / ls.pdf);
+            if (any(contribution > 0.0f) && is_finite3(contribution)) {
+                const float3 origin = offset_ray_origin(s.position, s.position_error, geometric_normal, ls.wi);
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] =
                     (float4)(light_shadow_segment(&ls, origin, 2.0f * params->scene_diameter), 0.0f);
@@ -139,17 +174,19 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
         }
     }
 
-    /* The continuation, by BRDF sampling. */
+    /* The continuation, by BSDF sampling. */
     const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF);
-    const float3 wi = lambert_sample(s.shading_normal, u.xy, params->hemisphere);
-    const float pdf = lambert_pdf(s.shading_normal, wi, params->hemisphere);
-    /* A direction below the geometric surface would leak through it. */
-    if (pdf > 0.0f && dot(s.geometric_normal, wi) > 0.0f) {
-        path->throughput[slot].xyz = throughput * f * (dot(s.shading_normal, wi) / pdf);
-        path->ray_origin[slot] = (float4)(origin, 0.0f);
-        path->ray_direction[slot] = (float4)(wi, pdf);
-        path->depth[slot] = depth + 1u;
-        outcome |= WF_SHADE_CONTINUES;
+    const BsdfSample bs = bsdf_sample(&bsdf, wo, u.xyz);
+    const float3 wi = from_local(&frame, bs.wi);
+    if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
+        const float3 weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
+        if (any(weight > 0.0f) && is_finite3(weight)) {
+            path->throughput[slot].xyz = throughput * weight;
+            path->ray_origin[slot] = (float4)(offset_ray_origin(s.position, s.position_error, geometric_normal, wi), 0.0f);
+            path->ray_direction[slot] = (float4)(wi, bs.delta ? 0.0f : bs.pdf);
+            path->depth[slot] = depth + 1u;
+            outcome |= WF_SHADE_CONTINUES;
+        }
     }
     return outcome;
 }
