@@ -83,8 +83,9 @@ void WavefrontScheduler::set_stage_args() {
     set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
     set_kernel_args(shared_then(STAGE_INTERSECT), own, scene_.nodes, scene_.triangles);
     set_kernel_args(shared_then(STAGE_SHADE), own, scene_.triangles, scene_.normals, scene_.materials, scene_.lights,
-                    scene_.punctual, scene_.environment.texels, scene_.environment.distribution, film_.layers,
-                    film_.layer_compensation);
+                    scene_.punctual, scene_.environment.texels, scene_.environment.distribution,
+                    scene_.textures.infos, scene_.textures.texels, scene_.textures.refs, scene_.textures.params,
+                    scene_.textures.texcoords, scene_.textures.tangents, film_.layers, film_.layer_compensation);
     set_kernel_args(shared_then(STAGE_INTERSECT_SHADOW), own, scene_.nodes, scene_.triangles, film_.layers,
                     film_.layer_compensation);
     shared_then(STAGE_ROULETTE);

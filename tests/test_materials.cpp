@@ -6,6 +6,7 @@
 // and a clear glass ball under a constant sky return the sky exactly), and
 // agreement of independent techniques where they do not.
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "environment_map.h"
 #include "render_command.h"
 #include "statistics.h"
+#include "texture_set.h"
 #include "test_support.h"
 
 namespace wf {
@@ -134,6 +136,57 @@ TEST(Materials, EveryTechniqueAgreesOnGlossySurfaces) {
     };
     expect_agree(glossy_scene(0.2f), WF_LIGHT_SAMPLING_BSDF, 1024, "sharp metal, mis against bsdf");
     expect_agree(glossy_scene(0.6f), WF_LIGHT_SAMPLING_NEE, 256, "rough metal, mis against nee");
+}
+
+// Textures reach the shading: a floor whose base colour is a 2×2 texture
+// (nearest filtering, so each quadrant is one texel), decoded from sRGB,
+// times the factor, under a constant sky with one bounce. With cosine
+// sampling and specular 0 every sample is exactly albedo · L, so each pixel
+// must be its texel's linear value times the factor times L, to rounding.
+TEST(Materials, BaseColourTextureReachesTheShading) {
+    Scene scene;
+    const uint32_t floor = add_material(scene, glm::vec3(0.8f, 0.8f, 0.8f), 0.0f, 1.0f, 0.0f);
+    scene.materials[floor].specular = 0.0f;
+    test::add_quad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, floor); // faces +y
+    // uv (0, 0) at the far left corner (-1, 0, -1), u along +x, v along +z.
+    for (const glm::vec3& p : scene.positions) scene.uv0.push_back(glm::vec2(0.5f * (p.x + 1.0f), 0.5f * (p.z + 1.0f)));
+    scene.uv1 = scene.uv0;
+    scene.tangents.assign(scene.positions.size(), glm::vec4(1, 0, 0, 1));
+    DecodedImage checker;
+    checker.width = checker.height = 2;
+    checker.channels = 3;
+    const uint32_t levels[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {128, 128, 128}};
+    for (const auto& l : levels) checker.texels.push_back(pack_rgba8(l[0], l[1], l[2], 255));
+    TextureInfo info{};
+    info.offset = scene.textures.add_texels(checker, "test");
+    info.width = info.height = 2;
+    info.flags = WF_TEXTURE_SRGB | WF_TEXTURE_NEAREST;
+    info.wrap_s = info.wrap_t = WF_WRAP_CLAMP_TO_EDGE;
+    info.channels = 3;
+    const int32_t texture = scene.textures.add_info(info, "checker");
+    scene.materials[floor].textures[WF_TEXTURE_BASE_COLOR].texture = texture;
+    scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.max_depth = 1;
+    settings.light_sampling = WF_LIGHT_SAMPLING_BSDF;
+    const uint32_t n = 16;
+    const RenderOutput out = render_scene(test::cpu_device(), scene,
+                                          test::camera_looking({0, 1, 0}, {0, -1, 0}, {0, 0, -1}, 0.5f),
+                                          ImageSize{n, n}, settings);
+    const auto srgb = [](uint32_t v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    // Image right is +x (u), image up is -z: the top rows see v < 0.5.
+    for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            const uint32_t texel = (j < n / 2 ? 0u : 2u) + (i < n / 2 ? 0u : 1u);
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(out.film.mean.rgb[3 * (size_t{j} * n + i) + c], 0.8 * srgb(levels[texel][c]), 1e-5)
+                    << "pixel " << i << ", " << j << ", channel " << c;
+        }
 }
 
 } // namespace

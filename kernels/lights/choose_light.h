@@ -19,9 +19,11 @@ inline uint choose_light(__global const LightEntry* lights, uint count, float u_
 inline LightSample sample_light(const RenderParams* params, __global const LightEntry* lights,
                                 __global const Triangle* triangles, __global const Material* materials,
                                 __global const PunctualLight* punctual, __global const float* environment_texels,
-                                __global const float* environment_distribution, float3 receiver, float4 u) {
+                                __global const float* environment_distribution, const SceneTextures* textures,
+                                float3 receiver, float4 u) {
     const LightEntry entry = lights[choose_light(lights, params->light_count, u.x, u.w)];
-    if (entry.kind == WF_LIGHT_TRIANGLE) return sample_emissive_triangle(entry, triangles, materials, receiver, u.yz);
+    if (entry.kind == WF_LIGHT_TRIANGLE)
+        return sample_emissive_triangle(entry, triangles, materials, textures, receiver, u.yz);
     LightSample s = no_light_sample();
     if (entry.kind == WF_LIGHT_PUNCTUAL) {
         const PunctualLight light = punctual[entry.index];

@@ -10,6 +10,7 @@
 #include "common/sampling.h"
 #include "geometry/ray_offset.h"
 #include "lights/light_sample.h"
+#include "materials/surface_material.h"
 
 /* Solid-angle density of reaching a light point at distance² dist2 whose
  * surface makes cosine cos_light with the ray; 0 where it would overflow. */
@@ -20,7 +21,8 @@ inline float light_pdf_solid_angle(float pmf, float area, float dist2, float cos
 
 /* A point on the triangle of `entry`, as seen from `receiver`. */
 inline LightSample sample_emissive_triangle(LightEntry entry, __global const Triangle* triangles,
-                                            __global const Material* materials, float3 receiver, float2 u) {
+                                            __global const Material* materials, const SceneTextures* textures,
+                                            float3 receiver, float2 u) {
     LightSample s = no_light_sample();
     s.segment_end = WF_SEGMENT_TO_SURFACE;
     const __global Triangle* t = &triangles[entry.index];
@@ -39,7 +41,12 @@ inline LightSample sample_emissive_triangle(LightEntry entry, __global const Tri
     const __global Material* m = &materials[t->material];
     const bool emits_toward = cos_front > 0.0f || (m->flags & WF_MATERIAL_DOUBLE_SIDED);
     s.normal = cos_front >= 0.0f ? front : -front;
-    s.radiance = emits_toward ? vload3(0, m->emission) : (float3)(0.0f);
+    SurfacePoint point;
+    point.triangle = entry.index;
+    point.material = t->material;
+    point.b1 = b.x;
+    point.b2 = b.y;
+    s.radiance = emits_toward ? surface_emission(m, textures, &point) : (float3)(0.0f);
     s.pdf = emits_toward ? light_pdf_solid_angle(entry.pmf, area, dist2, fabs(cos_front)) : 0.0f;
     return s;
 }

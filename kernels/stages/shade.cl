@@ -15,7 +15,7 @@
 #include "common/bounce_layers.h"
 #include "common/queue_push.h"
 #include "common/sample_values.h"
-#include "bsdf/bsdf.h"
+#include "materials/surface_material.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 
@@ -33,7 +33,7 @@ typedef struct SurfaceHit {
 } SurfaceHit;
 
 inline SurfaceHit surface_at(__global const Triangle* t, __global const TriangleNormals* n,
-                             float4 hit, float3 direction) {
+                             const SceneTextures* textures, const SurfacePoint* point, float4 hit, float3 direction) {
     SurfaceHit s;
     const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
     /* From the corners, not origin + t·direction: off the triangle by its own
@@ -46,7 +46,8 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
     s.front_face = dot(ng, direction) < 0.0f;
     s.geometric_normal = s.front_face ? ng : -ng;
     const float b0 = 1.0f - hit.y - hit.z;
-    const float3 ns = normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2));
+    const float3 ns = surface_normal(
+        textures, point, normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2)));
     s.shading_normal = dot(ns, s.geometric_normal) < 0.0f ? -ns : ns;
     return s;
 }
@@ -75,18 +76,6 @@ typedef struct ShadingFrame {
 inline float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
 inline float3 from_local(const ShadingFrame* f, float3 v) { return v.x * f->x + v.y * f->y + v.z * f->z; }
 
-inline BsdfParams material_bsdf(__global const Material* m, uint hemisphere) {
-    BsdfParams p;
-    p.base_color = vload3(0, m->base_color);
-    p.metallic = m->metallic;
-    p.roughness = m->roughness;
-    p.transmission = m->transmission;
-    p.ior = m->ior;
-    p.specular = m->specular;
-    p.hemisphere = hemisphere;
-    return p;
-}
-
 /* A world direction the BSDF gave or evaluated, with its local z: it must
  * leave on the side of the geometric surface that the shading normal says,
  * else it would cross the surface where the two normals disagree (a leak). */
@@ -99,8 +88,8 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                        __global const Triangle* triangles, __global const TriangleNormals* normals,
                        __global const Material* materials, __global const LightEntry* lights,
                        __global const PunctualLight* punctual, __global const float* environment_texels,
-                       __global const float* environment_distribution, __global float4* layers,
-                       __global float4* layer_compensation) {
+                       __global const float* environment_distribution, const SceneTextures* textures,
+                       __global float4* layers, __global float4* layer_compensation) {
     const float4 hit = path->hit[slot];
     const int triangle = as_int(hit.w);
     const float4 ray = path->ray_direction[slot];
@@ -124,7 +113,12 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const uint sample = path->sample[slot];
     const __global Triangle* t = &triangles[triangle];
     const __global Material* m = &materials[t->material];
-    const SurfaceHit s = surface_at(t, &normals[triangle], hit, direction);
+    SurfacePoint point;
+    point.triangle = (uint)triangle;
+    point.material = t->material;
+    point.b1 = hit.y;
+    point.b2 = hit.z;
+    const SurfaceHit s = surface_at(t, &normals[triangle], textures, &point, hit, direction);
 
     /* Emission seen along the ray. */
     if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
@@ -132,11 +126,11 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
         const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
         add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
-                     weight * throughput * vload3(0, m->emission));
+                     weight * throughput * surface_emission(m, textures, &point));
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
-    const BsdfParams bsdf = material_bsdf(m, params->hemisphere);
+    const BsdfParams bsdf = surface_bsdf(m, textures, &point, params->hemisphere);
     /* An opaque surface is shaded on the side the ray arrived from; a
      * transmissive one keeps its front (counter-clockwise) side as +z, so
      * that wo.z < 0 says the ray arrived from inside. */
@@ -153,7 +147,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     if (params->light_count > 0u && !bsdf_is_delta(&bsdf)) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
         const LightSample ls = sample_light(params, lights, triangles, materials, punctual, environment_texels,
-                                            environment_distribution, s.position, u);
+                                            environment_distribution, textures, s.position, u);
         const float3 wi = to_local(&frame, ls.wi);
         const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
         float pdf_bsdf;
@@ -195,13 +189,17 @@ __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     __global const TriangleNormals* normals, __global const Material* materials,
                     __global const LightEntry* lights, __global const PunctualLight* punctual,
                     __global const float* environment_texels, __global const float* environment_distribution,
+                    __global const TextureInfo* texture_infos, __global const uint* texels,
+                    __global const TextureRef* texture_refs, __global const MaterialTextureParams* material_textures,
+                    __global const TriangleTexcoords* texcoords, __global const TriangleTangents* tangents,
                     __global float4* layers, __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
+    const SceneTextures textures = {texture_infos, texels, texture_refs, material_textures, texcoords, tangents};
     __local uint scratch[2];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
     const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
-                                             environment_texels, environment_distribution, layers,
+                                             environment_texels, environment_distribution, &textures, layers,
                                              layer_compensation)
                                 : WF_SHADE_FINISHED;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
