@@ -103,6 +103,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--hemisphere H").help("Lambertian sampling: uniform or cosine (default: cosine)");
     ap.arg("--sampler S").help("Sample values: independent or sobol (Owen-scrambled) (default: independent)");
     ap.arg("--env FILE").help("Environment light: an equirectangular .exr or .hdr, importance-sampled (default: none; a scene without any light gets a uniform white one)");
+    ap.arg("--env-uniform L").help("Environment light of the same radiance L from every direction, instead of --env");
     ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
     ap.arg("--env-scale S").help("Multiply the environment's radiance (default: 1)");
     ap.arg("--aov A").help("Extra EXR layers: bounces (radiance after 0, 1, ..., 6 and 7+ reflections)");
@@ -149,6 +150,10 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (!text("env-scale").empty()) o.environment_scale = float(parse_positive("--env-scale", text("env-scale")));
     if (o.environment.empty() && (!text("env-rotate").empty() || !text("env-scale").empty()))
         throw InputError("--env-rotate and --env-scale need --env");
+    if (!text("env-uniform").empty()) {
+        if (!o.environment.empty()) throw InputError("--env-uniform and --env exclude each other");
+        o.environment_uniform = float(parse_positive("--env-uniform", text("env-uniform")));
+    }
     o.reference = text("reference");
     o.report_csv = text("report");
     if (!text("report-every").empty()) o.progress.report_every = parse_positive("--report-every", text("report-every"));

@@ -21,6 +21,7 @@ struct RenderOptions {
     std::string environment;        // an equirectangular map; empty: none
     float environment_rotate = 0.0f; // degrees about +y
     float environment_scale = 1.0f;
+    float environment_uniform = 0.0f; // > 0: a constant environment of this radiance instead
     RenderSettings settings;
     ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
     std::string reference;    // an image to report the error against

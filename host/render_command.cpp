@@ -91,6 +91,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         for (const std::string& w : map->warnings) log << "warning: " << options.environment << ": " << w << "\n";
         scene.environment = std::move(map);
     }
+    if (options.environment_uniform > 0.0f)
+        scene.environment = std::make_shared<EnvironmentMap>(constant_environment(options.environment_uniform));
     light_unlit_scene(scene);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";

@@ -208,6 +208,10 @@ TEST_F(Cli, EnvironmentFlagsLightAScene) {
     for (float v : image.rgb) sum += v;
     EXPECT_GT(sum, 0.0);
 
+    const test::ProcessResult uniform = run(small + "--env-uniform 0.5 -o " + path("uniform.exr"));
+    ASSERT_EQ(uniform.exit_code, 0) << uniform.err;
+    EXPECT_NE(uniform.out.find("an environment"), std::string::npos) << uniform.out;
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-uniform 1 -o " + path("x.exr"), "--env-uniform");
     expect_rejected(small + "--env " + path("missing.exr") + " -o " + path("x.exr"), "missing.exr");
     expect_rejected(small + "--env-scale 2 -o " + path("x.exr"), "--env");
     expect_rejected(small + "--env " + path("sky.exr") + " --env-scale -1 -o " + path("x.exr"), "--env-scale");
