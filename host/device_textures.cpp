@@ -60,4 +60,10 @@ DeviceTextures upload_textures(const cl::Context& context, const DeviceTextureDa
     return t;
 }
 
+cl_uint set_texture_args(cl::Kernel& kernel, cl_uint first, const DeviceTextures& t) {
+    for (const cl::Buffer* buffer : {&t.infos, &t.texels, &t.refs, &t.params, &t.texcoords, &t.tangents})
+        kernel.setArg(first++, *buffer);
+    return first;
+}
+
 } // namespace wf

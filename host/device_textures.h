@@ -34,4 +34,9 @@ struct DeviceTextures {
 
 DeviceTextures upload_textures(const cl::Context& context, const DeviceTextureData& data);
 
+// Sets the buffers as `kernel`'s arguments from index `first` on, in the order
+// of WF_SCENE_TEXTURE_PARAMS (kernels/materials/surface_material.h); returns
+// the index after them.
+cl_uint set_texture_args(cl::Kernel& kernel, cl_uint first, const DeviceTextures& textures);
+
 } // namespace wf

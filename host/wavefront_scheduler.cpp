@@ -81,12 +81,17 @@ void WavefrontScheduler::set_stage_args() {
     };
     const cl_uint own = PathPool::kSharedStageArgs;
     set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
-    set_kernel_args(shared_then(STAGE_INTERSECT), own, scene_.nodes, scene_.triangles);
-    set_kernel_args(shared_then(STAGE_SHADE), own, scene_.triangles, scene_.normals, scene_.materials, scene_.lights,
-                    scene_.punctual, scene_.environment.texels, scene_.environment.distribution,
-                    scene_.textures.infos, scene_.textures.texels, scene_.textures.refs, scene_.textures.params,
-                    scene_.textures.texcoords, scene_.textures.tangents, film_.layers, film_.layer_compensation);
-    set_kernel_args(shared_then(STAGE_INTERSECT_SHADOW), own, scene_.nodes, scene_.triangles, film_.layers,
+    cl::Kernel& intersect = shared_then(STAGE_INTERSECT);
+    set_kernel_args(intersect, own, scene_.nodes, scene_.triangles);
+    set_texture_args(intersect, own + 2, scene_.textures);
+    cl::Kernel& shade = shared_then(STAGE_SHADE);
+    set_kernel_args(shade, own, scene_.triangles, scene_.normals, scene_.materials, scene_.lights, scene_.punctual,
+                    scene_.environment.texels, scene_.environment.distribution);
+    set_kernel_args(shade, set_texture_args(shade, own + 7, scene_.textures), film_.layers,
+                    film_.layer_compensation);
+    cl::Kernel& shadow = shared_then(STAGE_INTERSECT_SHADOW);
+    set_kernel_args(shadow, own, scene_.nodes, scene_.triangles);
+    set_kernel_args(shadow, set_texture_args(shadow, own + 2, scene_.textures), film_.layers,
                     film_.layer_compensation);
     shared_then(STAGE_ROULETTE);
     set_kernel_args(shared_then(STAGE_ACCUMULATE), own, film_.sum, film_.compensation, film_.sum_squares,

@@ -189,5 +189,65 @@ TEST(Materials, BaseColourTextureReachesTheShading) {
         }
 }
 
+// An alpha-masked quad (a 2×1 texture: transparent left texel, opaque right)
+// between a floor and a directional light from straight above. It must cast
+// a shadow only where it is opaque: the floor under the transparent half is
+// lit exactly (ρ/π · E), under the opaque half it is black. The camera looks
+// at the floor from below the quad, so only shadow rays meet the quad; then a
+// camera above it sees the same through the cut-out, by closest hits.
+TEST(Materials, AlphaMaskCutsOutInShadowAndCameraRays) {
+    Scene scene;
+    const uint32_t floor = add_material(scene, glm::vec3(0.5f), 0.0f, 1.0f, 0.0f);
+    scene.materials[floor].specular = 0.0f;
+    test::add_quad(scene, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2}, floor); // faces +y
+    const uint32_t leaf = add_material(scene, glm::vec3(0.0f), 0.0f, 1.0f, 0.0f);
+    scene.materials[leaf].specular = 0.0f;
+    scene.materials[leaf].alpha_mode = WF_ALPHA_MASK;
+    scene.materials[leaf].alpha_cutoff = 0.5f;
+    scene.materials[leaf].double_sided = true;
+    test::add_quad(scene, {-2, 0.5f, -2}, {2, 0.5f, -2}, {2, 0.5f, 2}, {-2, 0.5f, 2}, leaf); // faces -y
+    // u along +x over both quads; v along +z.
+    for (const glm::vec3& p : scene.positions) scene.uv0.push_back(glm::vec2(0.25f * (p.x + 2.0f), 0.25f * (p.z + 2.0f)));
+    scene.uv1 = scene.uv0;
+    scene.tangents.assign(scene.positions.size(), glm::vec4(1, 0, 0, 1));
+    DecodedImage mask;
+    mask.width = 2;
+    mask.height = 1;
+    mask.channels = 4;
+    mask.texels = {pack_rgba8(0, 0, 0, 0), pack_rgba8(0, 0, 0, 255)};
+    TextureInfo info{};
+    info.offset = scene.textures.add_texels(mask, "test");
+    info.width = 2;
+    info.height = 1;
+    info.flags = WF_TEXTURE_SRGB | WF_TEXTURE_NEAREST;
+    info.wrap_s = info.wrap_t = WF_WRAP_CLAMP_TO_EDGE;
+    info.channels = 4;
+    scene.materials[leaf].textures[WF_TEXTURE_BASE_COLOR].texture = scene.textures.add_info(info, "mask");
+    PunctualLight sun{};
+    sun.type = WF_PUNCTUAL_DIRECTIONAL;
+    sun.direction[1] = -1.0f;
+    for (float& i : sun.intensity) i = 2.0f;
+    scene.punctual_lights.push_back(sun);
+
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.max_depth = 1;
+    const uint32_t n = 16;
+    const RenderOutput below = render_scene(test::cpu_device(), scene,
+                                            test::camera_looking({0, 0.3f, 0}, {0, -1, 0}, {0, 0, -1}, 1.0f),
+                                            ImageSize{n, n}, settings);
+    // From above, the camera sees the lit floor through the cut-out and the
+    // black quad elsewhere: the same picture.
+    const RenderOutput above = render_scene(test::cpu_device(), scene,
+                                            test::camera_looking({0, 1.5f, 0}, {0, -1, 0}, {0, 0, -1}, 0.5f),
+                                            ImageSize{n, n}, settings);
+    const double lit = 0.5 / 3.14159265358979323846 * 2.0;
+    for (const RenderOutput* out : {&below, &above})
+        for (uint32_t j = 0; j < n; ++j)
+            for (uint32_t i = 0; i < n; ++i) // image right is +x: the opaque half
+                ASSERT_NEAR(out->film.mean.rgb[3 * (size_t{j} * n + i)], i < n / 2 ? lit : 0.0, 1e-5)
+                    << (out == &below ? "below" : "above") << ", pixel " << i << ", " << j;
+}
+
 } // namespace
 } // namespace wf

@@ -90,6 +90,7 @@ std::vector<cl_float4> intersect_on_device(const DeviceSceneData& data, const st
     const cl_uint next = pool.set_stage_args(intersect, params);
     intersect.setArg(next, uploaded.nodes);
     intersect.setArg(next + 1, uploaded.triangles);
+    set_texture_args(intersect, next + 2, uploaded.textures);
     // Rounded up to whole work-groups; the kernel stops at the queue length.
     q.enqueueNDRangeKernel(intersect, cl::NullRange, cl::NDRange((count + 63) / 64 * 64), cl::NDRange(64));
     std::vector<cl_float4> hits(count);

@@ -45,13 +45,28 @@
  *    beyond every hit.
  *
  * Nodes are visited front to back with a stack of WF_BVH_STACK_SIZE indices;
- * the builder keeps every tree shallower than that. */
+ * the builder keeps every tree shallower than that.
+ *
+ * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
+ * it rejects (a transparent texel of an alpha-masked material) is as if the
+ * triangle were not there. The host's queries, for the tests, have none. */
 #ifndef WF_BVH_TRAVERSE_H
 #define WF_BVH_TRAVERSE_H
 
 #include "wavefront/compat.h"
 #include "wavefront/scene_types.h"
 #include "geometry/triangle_intersect.h"
+
+#ifdef __OPENCL_C_VERSION__
+#include "materials/alpha_mask.h"
+#define WF_HIT_FILTER_PARAM , const HitFilter* filter
+#define WF_HIT_FILTER_ARG , filter
+#define WF_HIT_PASSES(triangles, i, hit) hit_passes_filter(filter, triangles, i, (hit)->u, (hit)->v)
+#else
+#define WF_HIT_FILTER_PARAM
+#define WF_HIT_FILTER_ARG
+#define WF_HIT_PASSES(triangles, i, hit) 1
+#endif
 
 #define WF_BVH_STACK_SIZE 64
 
@@ -141,7 +156,8 @@ WF_INLINE RayHit selected_hit(const HitSelection* s) {
  * against the window's end when pushed, and an earlier end since then still
  * culls its children. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
-                              float3 origin, float3 direction, float t_max, int stop_at_first_hit) {
+                              float3 origin, float3 direction, float t_max,
+                              int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     const WatertightRay ray = watertight_ray(origin, direction);
     const BoxRay box = box_ray(nodes, origin, direction);
     HitSelection selection = no_hits(t_max);
@@ -171,7 +187,8 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
             for (uint32_t i = first; i < first + count; ++i) {
                 TriangleHit candidate;
                 if (!intersect_triangle(&ray, load_float3(triangles[i].v0), load_float3(triangles[i].v1),
-                                        load_float3(triangles[i].v2), t_max, &candidate))
+                                        load_float3(triangles[i].v2), t_max, &candidate) ||
+                    !WF_HIT_PASSES(triangles, (int32_t)i, &candidate))
                     continue;
                 select_hit(&selection, &candidate, (int32_t)i, triangles[i].light >= 0);
                 if (stop_at_first_hit) return selected_hit(&selection);
@@ -183,14 +200,14 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
 }
 
 WF_INLINE RayHit bvh_closest_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
-                                 float3 origin, float3 direction, float t_max) {
-    return bvh_traverse(nodes, triangles, origin, direction, t_max, 0);
+                                 float3 origin, float3 direction, float t_max WF_HIT_FILTER_PARAM) {
+    return bvh_traverse(nodes, triangles, origin, direction, t_max, 0 WF_HIT_FILTER_ARG);
 }
 
 /* 1 if any triangle is hit with t in (0, t_max). */
 WF_INLINE int bvh_any_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles, float3 origin,
-                          float3 direction, float t_max) {
-    return bvh_traverse(nodes, triangles, origin, direction, t_max, 1).triangle >= 0;
+                          float3 direction, float t_max WF_HIT_FILTER_PARAM) {
+    return bvh_traverse(nodes, triangles, origin, direction, t_max, 1 WF_HIT_FILTER_ARG).triangle >= 0;
 }
 
 WF_DEVICE_END

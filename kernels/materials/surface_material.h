@@ -21,6 +21,15 @@ typedef struct SceneTextures {
     __global const TriangleTangents* tangents;
 } SceneTextures;
 
+/* The texture buffers as kernel parameters, in the order the host sets them
+ * (host/wavefront_scheduler.cpp), and gathered into one SceneTextures. */
+#define WF_SCENE_TEXTURE_PARAMS                                                                              \
+    __global const TextureInfo *texture_infos, __global const uint *texels,                                  \
+        __global const TextureRef *texture_refs, __global const MaterialTextureParams *material_textures,    \
+        __global const TriangleTexcoords *texcoords, __global const TriangleTangents *tangents
+#define WF_BIND_SCENE_TEXTURES(name)                                                                         \
+    const SceneTextures name = {texture_infos, texels, texture_refs, material_textures, texcoords, tangents}
+
 /* Where on a triangle, for texture lookups: its index and the barycentrics
  * of corners 1 and 2. */
 typedef struct SurfacePoint {

@@ -189,12 +189,9 @@ __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     __global const TriangleNormals* normals, __global const Material* materials,
                     __global const LightEntry* lights, __global const PunctualLight* punctual,
                     __global const float* environment_texels, __global const float* environment_distribution,
-                    __global const TextureInfo* texture_infos, __global const uint* texels,
-                    __global const TextureRef* texture_refs, __global const MaterialTextureParams* material_textures,
-                    __global const TriangleTexcoords* texcoords, __global const TriangleTangents* tangents,
-                    __global float4* layers, __global float4* layer_compensation) {
+                    WF_SCENE_TEXTURE_PARAMS, __global float4* layers, __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
-    const SceneTextures textures = {texture_infos, texels, texture_refs, material_textures, texcoords, tangents};
+    WF_BIND_SCENE_TEXTURES(textures);
     __local uint scratch[2];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);

@@ -1,0 +1,27 @@
+/* alpha_mask.h — glTF's alpha MASK mode as the BVH traversal applies it
+ * (geometry/bvh_traverse.h): a hit on a masked material counts only where the
+ * base colour's alpha (factor times texture) reaches the cutoff, for closest
+ * hits and shadow rays alike, so a cut-out leaf neither shows nor casts a
+ * shadow where it is transparent. Device only: the host's traversal (for the
+ * tests) has no textures and passes every hit. */
+#ifndef WF_ALPHA_MASK_H
+#define WF_ALPHA_MASK_H
+
+#include "materials/surface_material.h"
+
+typedef SceneTextures HitFilter;
+
+inline int hit_passes_filter(const HitFilter* textures, __global const Triangle* triangles, int triangle, float b1,
+                             float b2) {
+    const uint material = triangles[triangle].material;
+    const MaterialTextureParams p = textures->params[material];
+    if (p.alpha_mode != WF_ALPHA_MASK) return 1;
+    SurfacePoint point;
+    point.triangle = (uint)triangle;
+    point.material = material;
+    point.b1 = b1;
+    point.b2 = b2;
+    return p.base_alpha * surface_texture(textures, &point, WF_TEXTURE_BASE_COLOR).w >= p.alpha_cutoff;
+}
+
+#endif
