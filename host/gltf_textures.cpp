@@ -85,6 +85,9 @@ std::vector<std::string> GltfTextures::warnings() const {
     if (blend_materials_)
         said.push_back("alpha mode BLEND on " + std::to_string(blend_materials_) +
                        " material(s) is rendered as MASK with cutoff 0.5");
+    if (occlusion_materials_)
+        said.push_back("occlusion maps on " + std::to_string(occlusion_materials_) +
+                       " material(s) are not used: the paths themselves find what is occluded");
     if (high_texcoords_)
         said.push_back(std::to_string(high_texcoords_) +
                        " texture reference(s) ask for TEXCOORD_2 or above; TEXCOORD_0 is read instead");
@@ -199,6 +202,7 @@ void GltfTextures::convert(const tinygltf::Material& material, size_t index, Sce
     } else {
         fail(where, "alphaMode '" + material.alphaMode + "' is not OPAQUE, MASK or BLEND");
     }
+    occlusion_materials_ += material.occlusionTexture.index >= 0;
 }
 
 } // namespace wf

@@ -63,6 +63,7 @@ private:
     std::vector<std::vector<int32_t>> infos_; // by glTF texture: (srgb) -> TextureInfo, -1 until made
     std::vector<std::array<uint32_t, 3>> decoded_sizes_; // by glTF image: width, height, channels
     size_t blend_materials_ = 0;
+    size_t occlusion_materials_ = 0;
     size_t high_texcoords_ = 0;
 };
 

@@ -40,6 +40,7 @@ const std::map<std::string, std::vector<std::string>> kExpectedWarnings = {
     {"GlassVaseFlowers.gltf", {"KHR_materials_volume"}},
     {"ToyCar.gltf", {"KHR_materials_clearcoat", "KHR_materials_sheen"}},
     {"Box.gltf", {"no light"}},
+    {"DamagedHelmet.glb", {"occlusion maps"}},
 };
 
 TEST(RealAssets, EveryAssetRendersWithoutNonFiniteSamples) {
