@@ -5,11 +5,12 @@
  * radiance; then, unless the path has reached --max-depth, one light sample is
  * prepared for intersect_shadow (next-event estimation, over every kind of
  * light) and the material's BSDF (bsdf/bsdf.h) chooses the continuation ray,
- * which roulette may end. A Dirac lobe (mirror, smooth glass) takes no light
- * sample and passes pdf 0 on, so the emission its ray finds is not weighed. --light-sampling decides which of the two techniques counts emitted
- * light: BRDF sampling alone, NEE alone, or both weighted by the power
- * heuristic (MIS), so that no light is counted twice. Delta lights are found
- * by NEE alone, whatever the technique. */
+ * which roulette may end. --light-sampling decides which of the two
+ * techniques counts emitted light: BRDF sampling alone, NEE alone, or both
+ * weighted by the power heuristic (MIS), so that no light is counted twice.
+ * Delta lights are found by NEE alone, whatever the technique; a Dirac lobe
+ * (mirror, smooth glass) takes no light sample and passes pdf 0 on, so the
+ * emission its ray finds is counted whole. */
 #include "path_state.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
@@ -53,8 +54,8 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
 }
 
 /* The weight of emission that BRDF sampling found, given the density with
- * which light sampling would have found it. A camera ray (pdf_bsdf 0) sees
- * emitters whatever the technique. */
+ * which light sampling would have found it. A camera ray or a Dirac bounce
+ * (pdf_bsdf 0) sees emitters whatever the technique: no light sample could. */
 inline float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_light) {
     if (pdf_bsdf == 0.0f || light_sampling == WF_LIGHT_SAMPLING_BSDF) return 1.0f;
     if (light_sampling == WF_LIGHT_SAMPLING_NEE) return 0.0f;
