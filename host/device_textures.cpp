@@ -13,7 +13,8 @@ size_t DeviceTextureData::bytes() const {
 
 DeviceTextureData make_device_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_order) {
     DeviceTextureData d;
-    const bool textured = !scene.textures.infos.empty() && scene.uv0.size() == scene.positions.size();
+    // Coordinates a scene lacks (a primitive without TEXCOORD_n) read as (0, 0).
+    const bool textured = !scene.textures.infos.empty();
     if (textured) {
         const auto corner_uv = [&](const std::vector<glm::vec2>& uv, size_t corner, float* out) {
             const glm::vec2 v = uv.size() > corner ? uv[corner] : glm::vec2(0.0f);

@@ -80,7 +80,7 @@ EnvironmentMap make_environment(const Image& image, float scale, float rotate_de
     if (!(total > 0.0)) {
         // Black: sample by solid angle alone, so every direction stays reachable.
         map.warnings.push_back(name + ": environment map is black everywhere");
-        for (uint32_t y = 0; y < h; ++y) row_weights[y] = solid_angle[y];
+        for (uint32_t y = 0; y < h; ++y) row_weights[y] = solid_angle[y] * w; // the whole row's
         total = 4.0 * kPi;
     }
     fill_cdf(row_weights, marginal);

@@ -88,7 +88,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (!options.environment.empty()) {
         auto map = std::make_shared<EnvironmentMap>(
             load_environment(options.environment, options.environment_scale, options.environment_rotate));
-        for (const std::string& w : map->warnings) log << "warning: " << options.environment << ": " << w << "\n";
+        for (const std::string& w : map->warnings) log << "warning: " << w << "\n"; // each names the file
         scene.environment = std::move(map);
     }
     if (options.environment_uniform > 0.0f)

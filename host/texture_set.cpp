@@ -107,7 +107,10 @@ TextureRef no_texture() {
 std::array<float, 6> texture_transform(float offset_u, float offset_v, float rotation, float scale_u,
                                        float scale_v) {
     const float c = std::cos(rotation), s = std::sin(rotation);
-    // [1 0 ou; 0 1 ov] [c s; -s c] [su 0; 0 sv], row-major 2x3.
+    // [1 0 ou; 0 1 ov] [c s; -s c] [su 0; 0 sv], row-major 2x3. The rotation is
+    // what the sample model TextureTransformTest, Babylon.js and three.js do; the
+    // extension's GLSL listing, read column-major, turns the other way, a known
+    // erratum (KhronosGroup/glTF issue 1563).
     return {c * scale_u, s * scale_v, offset_u, -s * scale_u, c * scale_v, offset_v};
 }
 

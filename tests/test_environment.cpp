@@ -203,6 +203,16 @@ TEST(EnvironmentSampling, ConstantMapIsUniform) {
     EXPECT_LT(worst, 1e-5);
 }
 
+// A black map keeps every direction reachable by sampling the sphere by
+// solid angle: its density is 1/(4 pi) everywhere, as for the constant map.
+TEST(EnvironmentSampling, BlackMapIsSampledUniformly) {
+    const EnvironmentMap m = make_environment(blank(16, 8), 1.0f, 0.0f, "black");
+    ASSERT_EQ(m.warnings.size(), 1u);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int s = 0; s < 1000; ++s) EXPECT_NEAR(sample(m, uniform(rng), uniform(rng)).pdf * 4.0 * kPi, 1.0, 1e-5);
+}
+
 // (4) Irradiance on an upward-facing plane by importance sampling, against the
 // exact sum over texels of L * integral of cos theta over the texel.
 TEST(EnvironmentSampling, IrradianceMatchesQuadrature) {

@@ -10,7 +10,7 @@
 #include "common/sampling.h"
 #include "geometry/ray_offset.h"
 #include "lights/light_sample.h"
-#include "materials/surface_material.h"
+#include "materials/alpha_mask.h"
 
 /* Solid-angle density of reaching a light point at distance² dist2 whose
  * surface makes cosine cos_light with the ray; 0 where it would overflow. */
@@ -46,8 +46,10 @@ inline LightSample sample_emissive_triangle(LightEntry entry, __global const Tri
     point.material = t->material;
     point.b1 = b.x;
     point.b2 = b.y;
-    s.radiance = emits_toward ? surface_emission(m, textures, &point) : (float3)(0.0f);
-    s.pdf = emits_toward ? light_pdf_solid_angle(entry.pmf, area, dist2, fabs(cos_front)) : 0.0f;
+    /* A point in an alpha-masked hole is not there: BSDF rays pass through it. */
+    const bool present = hit_passes_filter(textures, triangles, (int)entry.index, b.x, b.y);
+    s.radiance = emits_toward && present ? surface_emission(m, textures, &point) : (float3)(0.0f);
+    s.pdf = emits_toward && present ? light_pdf_solid_angle(entry.pmf, area, dist2, fabs(cos_front)) : 0.0f;
     return s;
 }
 
