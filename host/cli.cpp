@@ -106,6 +106,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--env-uniform L").help("Environment light of the same radiance L from every direction, instead of --env");
     ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
     ap.arg("--env-scale S").help("Multiply the environment's radiance (default: 1)");
+    ap.arg("--no-specialize").store_true().help("Compile the generic kernels, every feature on, instead of those for the scene's features");
     ap.arg("--aov A").help("Extra EXR layers: bounces (radiance after 0, 1, ..., 6 and 7+ reflections)");
     ap.separator("Error against time:");
     ap.arg("--reference REF").help("Report MSE, relMSE and MAE against this image at every checkpoint");
@@ -145,6 +146,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
         parse_choice("--aov", text("aov"), {"bounces"});
         o.settings.bounce_layers = 8;
     }
+    o.settings.specialize = !ap["no-specialize"].get<int>();
     o.environment = text("env");
     if (!text("env-rotate").empty()) o.environment_rotate = float(parse_finite("--env-rotate", text("env-rotate")));
     if (!text("env-scale").empty()) o.environment_scale = float(parse_positive("--env-scale", text("env-scale")));

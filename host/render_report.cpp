@@ -22,6 +22,7 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << "scene      " << s.scene << ": " << s.triangles << " triangles, " << s.materials << " materials, "
         << s.emissive_triangles << " emissive triangles, " << s.punctual_lights << " punctual lights, "
         << (s.environment ? "an environment" : "no environment") << "\n";
+    out << "features   " << s.features << "\n";
     out << "device     " << s.device << "\n";
     out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp -> " << s.output << "\n";
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes

@@ -22,6 +22,7 @@ struct RenderSummary {
     size_t emissive_triangles = 0;
     size_t punctual_lights = 0;
     bool environment = false;
+    std::string features; // what the kernels were compiled for
     size_t bvh_nodes = 0;
     int bvh_depth = 0;
     std::string device;

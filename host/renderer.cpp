@@ -9,6 +9,7 @@
 #include "errors.h"
 #include "layout_check.h"
 #include "path_pool.h"
+#include "scene_features.h"
 
 namespace wf {
 namespace {
@@ -48,7 +49,9 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
                                   size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
 
     check_shared_layouts(device);
-    program_ = build_kernel_program(device, "wavefront.cl");
+    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    program_ = build_kernel_program(device, "wavefront.cl", feature_defines(features));
+    summary_.features = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
     device_scene_ = upload_scene(device.context, data);
     scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_,
                                                       make_device_camera(camera, size), settings);

@@ -133,7 +133,9 @@ void WavefrontScheduler::render_to(uint32_t spp) {
         events.emplace_back(STAGE_INTERSECT, launch(STAGE_INTERSECT, active));
         events.emplace_back(STAGE_SHADE, launch(STAGE_SHADE, active));
         queue.enqueueFillBuffer(pool_.counters, 0u, 0, 2 * sizeof(cl_uint)); // EXTEND, REGENERATE
-        events.emplace_back(STAGE_INTERSECT_SHADOW, launch(STAGE_INTERSECT_SHADOW, active));
+        // Without lights no shadow ray is ever queued: the stage is left out.
+        if (params_.light_count > 0)
+            events.emplace_back(STAGE_INTERSECT_SHADOW, launch(STAGE_INTERSECT_SHADOW, active));
         events.emplace_back(STAGE_ROULETTE, launch(STAGE_ROULETTE, active));
         events.emplace_back(STAGE_ACCUMULATE, launch(STAGE_ACCUMULATE, active));
         queue.enqueueReadBuffer(pool_.counters, CL_TRUE, 0, sizeof(counters), counters.data());

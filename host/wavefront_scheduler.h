@@ -37,6 +37,7 @@ struct RenderSettings {
     uint32_t hemisphere = WF_HEMISPHERE_COSINE;
     uint32_t sampler = WF_SAMPLER_INDEPENDENT;
     uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
+    bool specialize = true;     // compile the kernels for the scene's features (host/scene_features.h)
 };
 
 enum Stage { STAGE_GENERATE, STAGE_INTERSECT, STAGE_SHADE, STAGE_INTERSECT_SHADOW, STAGE_ROULETTE, STAGE_ACCUMULATE, STAGE_COUNT };

@@ -5,6 +5,7 @@
 #define WF_CHOOSE_LIGHT_H
 
 #include "wavefront/path_state.h"
+#include "compiled_features.h"
 #include "lights/light_sample.h"
 #include "lights/emissive_triangles.h"
 #include "lights/environment.h"
@@ -22,9 +23,12 @@ inline LightSample sample_light(const RenderParams* params, __global const Light
                                 __global const float* environment_distribution, const SceneTextures* textures,
                                 float3 receiver, float4 u) {
     const LightEntry entry = lights[choose_light(lights, params->light_count, u.x, u.w)];
+#if WF_HAS_EMISSIVE_TRIANGLES
     if (entry.kind == WF_LIGHT_TRIANGLE)
         return sample_emissive_triangle(entry, triangles, materials, textures, receiver, u.yz);
+#endif
     LightSample s = no_light_sample();
+#if WF_HAS_PUNCTUAL_LIGHTS
     if (entry.kind == WF_LIGHT_PUNCTUAL) {
         const PunctualLight light = punctual[entry.index];
         const PunctualSample p = punctual_sample(light, receiver);
@@ -36,11 +40,16 @@ inline LightSample sample_light(const RenderParams* params, __global const Light
         s.point = vload3(0, light.position);
         return s;
     }
-    const EnvironmentSample e =
-        environment_sample(params->environment, environment_texels, environment_distribution, u.yz);
-    s.wi = e.direction;
-    s.radiance = e.radiance;
-    s.pdf = entry.pmf * e.pdf;
+#endif
+#if WF_HAS_ENVIRONMENT
+    if (entry.kind == WF_LIGHT_ENVIRONMENT) {
+        const EnvironmentSample e =
+            environment_sample(params->environment, environment_texels, environment_distribution, u.yz);
+        s.wi = e.direction;
+        s.radiance = e.radiance;
+        s.pdf = entry.pmf * e.pdf;
+    }
+#endif
     return s;
 }
 

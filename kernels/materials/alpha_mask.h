@@ -13,6 +13,7 @@ typedef SceneTextures HitFilter;
 
 inline int hit_passes_filter(const HitFilter* textures, __global const Triangle* triangles, int triangle, float b1,
                              float b2) {
+#if WF_HAS_ALPHA_MASK
     const uint material = triangles[triangle].material;
     const MaterialTextureParams p = textures->params[material];
     if (p.alpha_mode != WF_ALPHA_MASK) return 1;
@@ -22,6 +23,9 @@ inline int hit_passes_filter(const HitFilter* textures, __global const Triangle*
     point.b1 = b1;
     point.b2 = b2;
     return p.base_alpha * surface_texture(textures, &point, WF_TEXTURE_BASE_COLOR).w >= p.alpha_cutoff;
+#else
+    return 1;
+#endif
 }
 
 #endif

@@ -8,6 +8,7 @@
 #define WF_SURFACE_MATERIAL_H
 
 #include "wavefront/scene_types.h"
+#include "compiled_features.h"
 #include "bsdf/bsdf.h"
 #include "materials/texture.h"
 
@@ -44,12 +45,16 @@ inline __global const TextureRef* texture_slot(const SceneTextures* tx, uint mat
 
 /* The slot's texture at the point, or (1, 1, 1, 1) when the slot has none. */
 inline float4 surface_texture(const SceneTextures* tx, const SurfacePoint* p, uint slot) {
+#if WF_HAS_TEXTURES
     __global const TextureRef* ref = texture_slot(tx, p->material, slot);
     if (ref->texture < 0) return (float4)(1.0f);
     __global const float* uv = ref->texcoord == 0u ? tx->texcoords[p->triangle].uv0 : tx->texcoords[p->triangle].uv1;
     const float b0 = 1.0f - p->b1 - p->b2;
     const float2 st = b0 * vload2(0, uv) + p->b1 * vload2(1, uv) + p->b2 * vload2(2, uv);
     return texture_sample(tx->infos, tx->texels, ref, st);
+#else
+    return (float4)(1.0f);
+#endif
 }
 
 inline BsdfParams surface_bsdf(__global const Material* m, const SceneTextures* tx, const SurfacePoint* p,
@@ -77,6 +82,7 @@ inline float3 surface_emission(__global const Material* m, const SceneTextures* 
  * by normalTexture.scale, in the frame of the interpolated tangent made
  * orthogonal to n and the bitangent cross(n, t) w. */
 inline float3 surface_normal(const SceneTextures* tx, const SurfacePoint* p, float3 n) {
+#if WF_HAS_NORMAL_MAPS
     __global const TextureRef* ref = texture_slot(tx, p->material, WF_TEXTURE_NORMAL);
     if (ref->texture < 0) return n;
     const float4 c = surface_texture(tx, p, WF_TEXTURE_NORMAL);
@@ -93,6 +99,9 @@ inline float3 surface_normal(const SceneTextures* tx, const SurfacePoint* p, flo
     const float3 bent = in_tangent_space.x * x + in_tangent_space.y * y + in_tangent_space.z * n;
     const float length_bent = length(bent);
     return length_bent > 0.0f && dot(bent, n) > 0.0f ? bent / length_bent : n;
+#else
+    return n;
+#endif
 }
 
 #endif

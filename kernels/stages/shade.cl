@@ -101,6 +101,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const float3 throughput = path->throughput[slot].xyz;
 
     if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
+#if WF_HAS_ENVIRONMENT
         if (params->environment_light != WF_NO_LIGHT) {
             const float pdf_light = lights[params->environment_light].pmf *
                                     environment_pdf(params->environment, environment_texels, direction);
@@ -108,6 +109,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
             add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
                          weight * throughput * environment_radiance(params->environment, environment_texels, direction));
         }
+#endif
         return WF_SHADE_FINISHED;
     }
 

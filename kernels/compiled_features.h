@@ -1,0 +1,26 @@
+/* compiled_features.h — the scene features the program is compiled for. The host sets
+ * each with -D from the scene (host/scene_features.h); a build without them,
+ * such as the tests' own small programs, has every feature on. */
+#ifndef WF_COMPILED_FEATURES_H
+#define WF_COMPILED_FEATURES_H
+
+#ifndef WF_HAS_TEXTURES
+#define WF_HAS_TEXTURES 1
+#endif
+#ifndef WF_HAS_NORMAL_MAPS
+#define WF_HAS_NORMAL_MAPS 1
+#endif
+#ifndef WF_HAS_ALPHA_MASK
+#define WF_HAS_ALPHA_MASK 1
+#endif
+#ifndef WF_HAS_EMISSIVE_TRIANGLES
+#define WF_HAS_EMISSIVE_TRIANGLES 1
+#endif
+#ifndef WF_HAS_PUNCTUAL_LIGHTS
+#define WF_HAS_PUNCTUAL_LIGHTS 1
+#endif
+#ifndef WF_HAS_ENVIRONMENT
+#define WF_HAS_ENVIRONMENT 1
+#endif
+
+#endif
