@@ -59,6 +59,32 @@ std::string render_usage() {
            "image (.exr: linear float radiance; .png and other 8-bit formats: sRGB).";
 }
 
+// `wavefront cache warm [--cache-dir DIR] [--device SPEC] SCENE...` or
+// `wavefront cache clear [--cache-dir DIR]`.
+CommandLine parse_cache_command(int argc, const char** argv) {
+    CommandLine cl;
+    const std::string action = argc > 2 ? argv[2] : "";
+    if (action != "warm" && action != "clear")
+        throw InputError("cache: expected warm or clear" + (action.empty() ? std::string() : ", not '" + action + "'"));
+    cl.command = action == "warm" ? Command::CacheWarm : Command::CacheClear;
+    for (int i = 3; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word == "--cache-dir" || word == "--device") {
+            if (i + 1 >= argc) throw InputError("cache " + action + ": " + word + " needs a value");
+            (word == "--cache-dir" ? cl.cache.directory : cl.cache.device) = argv[++i];
+        } else if (!word.empty() && word[0] == '-') {
+            throw InputError("cache " + action + ": unknown flag '" + word + "'");
+        } else if (action == "warm") {
+            cl.cache.scenes.push_back(word);
+        } else {
+            throw InputError("cache clear: unexpected argument '" + word + "'");
+        }
+    }
+    if (action == "warm" && cl.cache.scenes.empty()) throw InputError("cache warm: no scene file given");
+    if (action == "clear" && !cl.cache.device.empty()) throw InputError("cache clear: --device is for warm");
+    return cl;
+}
+
 } // namespace
 
 CommandLine parse_command_line(int argc, const char** argv) {
@@ -67,6 +93,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (argc < 2 || first == "--help" || first == "-h" || first == "help") {
         cl.help = "usage: wavefront render SCENE [flags]   render a glTF scene (see `wavefront render --help`)\n"
                   "       wavefront devices                list OpenCL platforms and devices\n"
+                  "       wavefront cache warm SCENE...    compile the kernels those scenes need ahead of time\n"
+                  "       wavefront cache clear            remove the compiled kernels kept on disk\n"
+                  "         (both take --cache-dir DIR; warm takes --device SPEC)\n"
                   "       wavefront --version";
         return cl;
     }
@@ -79,7 +108,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
         cl.command = Command::Devices;
         return cl;
     }
-    if (first != "render") throw InputError("unknown command '" + first + "' (expected render or devices)");
+    if (first == "cache") return parse_cache_command(argc, argv);
+    if (first != "render")
+        throw InputError("unknown command '" + first + "' (expected render, devices or cache)");
 
     RenderOptions& o = cl.render;
     std::vector<std::string> positional;
@@ -106,6 +137,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--env-uniform L").help("Environment light of the same radiance L from every direction, instead of --env");
     ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
     ap.arg("--env-scale S").help("Multiply the environment's radiance (default: 1)");
+    ap.arg("--cache-dir DIR").help("Where compiled kernels are kept (default: $XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront)");
     ap.arg("--no-specialize").store_true().help("Compile the generic kernels, every feature on, instead of those for the scene's features");
     ap.arg("--aov A").help("Extra EXR layers: bounces (radiance after 0, 1, ..., 6 and 7+ reflections)");
     ap.separator("Error against time:");
@@ -147,6 +179,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
         o.settings.bounce_layers = 8;
     }
     o.settings.specialize = !ap["no-specialize"].get<int>();
+    o.cache_dir = text("cache-dir");
     o.environment = text("env");
     if (!text("env-rotate").empty()) o.environment_rotate = float(parse_finite("--env-rotate", text("env-rotate")));
     if (!text("env-scale").empty()) o.environment_scale = float(parse_positive("--env-scale", text("env-scale")));

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "progressive_render.h"
 #include "wavefront_scheduler.h"
@@ -18,6 +19,7 @@ struct RenderOptions {
     uint32_t height = 0;
     int camera = -1;     // -1: the file's first perspective camera
     std::string device;  // empty: the first GPU, else the first device
+    std::string cache_dir;          // --cache-dir; empty: the default (program_cache.h)
     std::string environment;        // an equirectangular map; empty: none
     float environment_rotate = 0.0f; // degrees about +y
     float environment_scale = 1.0f;
@@ -28,11 +30,19 @@ struct RenderOptions {
     std::string report_csv;   // where to write the checkpoints as CSV
 };
 
-enum class Command { Render, Devices, Help, Version };
+// `wavefront cache warm|clear`.
+struct CacheOptions {
+    std::string directory;           // --cache-dir, else the default (program_cache.h)
+    std::string device;              // for warm
+    std::vector<std::string> scenes; // for warm
+};
+
+enum class Command { Render, Devices, Help, Version, CacheWarm, CacheClear };
 
 struct CommandLine {
     Command command = Command::Help;
     RenderOptions render;
+    CacheOptions cache;
     std::string help; // the text to print for Command::Help
 };
 

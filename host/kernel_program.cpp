@@ -23,19 +23,39 @@ std::string first_error_line(const std::string& log) {
 } // namespace
 
 KernelProgram build_kernel_program(const OpenClDevice& device, const std::string& source_path,
-                                   const std::string& options) {
+                                   const std::string& options, const ProgramCache* cache) {
     const auto start = std::chrono::steady_clock::now();
+    const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const std::string source = expand_kernel_source(source_path);
+    const std::string all_options = "-cl-std=CL1.2 " + options;
+    const std::string key = cache ? program_cache_key(device.info, all_options, source) : std::string();
     KernelProgram result;
-    result.program = cl::Program(device.context, expand_kernel_source(source_path));
+    if (cache) {
+        if (const auto binary = cache->load(key)) {
+            try {
+                result.program = cl::Program(device.context, {device.info.device}, cl::Program::Binaries{*binary});
+                result.program.build({device.info.device}, all_options.c_str());
+                result.from_cache = true;
+                result.build_seconds = seconds();
+                return result;
+            } catch (const cl::Error&) {
+                // A binary the driver will not load (a driver update it cannot see): compile instead.
+            }
+        }
+    }
+    result.program = cl::Program(device.context, source);
     try {
-        result.program.build({device.info.device}, ("-cl-std=CL1.2 " + options).c_str());
+        result.program.build({device.info.device}, all_options.c_str());
     } catch (const cl::Error&) {
         const std::string log = result.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device);
         throw DeviceError("kernel " + source_path + " failed to build on " + device.info.name + ": " +
                           first_error_line(log));
     }
-    result.build_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (cache) {
+        const auto binaries = result.program.getInfo<CL_PROGRAM_BINARIES>();
+        if (!binaries.empty() && !binaries.front().empty()) cache->store(key, binaries.front());
+    }
+    result.build_seconds = seconds();
     return result;
 }
 

@@ -21,6 +21,12 @@ int main(int argc, const char** argv) {
         case wf::Command::Devices:
             wf::print_devices(std::cout);
             return 0;
+        case wf::Command::CacheWarm:
+            wf::warm_cache(cl.cache, std::cout);
+            return 0;
+        case wf::Command::CacheClear:
+            wf::clear_cache(cl.cache, std::cout);
+            return 0;
         case wf::Command::Render:
             wf::print_report(std::cout, wf::run_render(cl.render, std::cout, std::cerr));
             return 0;

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -13,6 +14,7 @@
 #include "errors.h"
 #include "gltf_loader.h"
 #include "image_io.h"
+#include "program_cache.h"
 #include "progressive_render.h"
 #include "renderer.h"
 
@@ -82,6 +84,12 @@ RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const 
     return RenderOutput{renderer.read(), renderer.summary()};
 }
 
+std::string cache_directory(const std::string& requested) {
+    if (!requested.empty()) return requested;
+    const std::optional<std::filesystem::path> fallback = ProgramCache::default_directory();
+    return fallback ? fallback->string() : std::string();
+}
+
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
     Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
@@ -114,8 +122,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     }
 
     const OpenClDevice device = open_device(options.device);
-    Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size,
-                      options.settings);
+    RenderSettings settings = options.settings;
+    settings.cache_dir = cache_directory(options.cache_dir);
+    Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     CheckpointLog checkpoints(out, options.report_csv);
@@ -135,6 +144,29 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     summary.output = options.output;
     summary.times.load = load_seconds;
     return summary;
+}
+
+void warm_cache(const CacheOptions& options, std::ostream& out) {
+    const std::string directory = cache_directory(options.directory);
+    if (directory.empty()) throw InputError("cache warm: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
+    const OpenClDevice device = open_device(options.device);
+    RenderSettings settings;
+    settings.cache_dir = directory;
+    for (const std::string& path : options.scenes) {
+        Scene scene = load_gltf(path);
+        light_unlit_scene(scene);
+        std::string features;
+        const KernelProgram program = build_render_program(device, scene, settings, &features);
+        out << path << ": " << features << ": " << (program.from_cache ? "already cached" : "compiled") << " in "
+            << program.build_seconds << " s\n";
+    }
+    out << "cache: " << directory << "\n";
+}
+
+void clear_cache(const CacheOptions& options, std::ostream& out) {
+    const std::string directory = cache_directory(options.directory);
+    if (directory.empty()) throw InputError("cache clear: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
+    out << "removed " << ProgramCache(directory).clear() << " compiled programs from " << directory << "\n";
 }
 
 } // namespace wf

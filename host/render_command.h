@@ -29,4 +29,13 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
 // `wavefront devices`: every OpenCL device with its index.
 void print_devices(std::ostream& out);
 
+// The program cache's directory: `requested`, else the default; empty with neither.
+std::string cache_directory(const std::string& requested);
+
+// `wavefront cache warm`: compiles the kernels each scene needs into the cache.
+void warm_cache(const CacheOptions& options, std::ostream& out);
+
+// `wavefront cache clear`.
+void clear_cache(const CacheOptions& options, std::ostream& out);
+
 } // namespace wf

@@ -26,7 +26,8 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << "device     " << s.device << "\n";
     out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp -> " << s.output << "\n";
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes
-        << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s, render "
+        << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s"
+        << (s.kernels_from_cache ? " (from cache)" : "") << ", render "
         << st.seconds << " s\n";
     out << std::setprecision(2);
     out << "samples    " << st.samples << " at " << per_second(st.samples, st.seconds) * 1e-6 << " M/s; mean path "

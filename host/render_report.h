@@ -23,6 +23,7 @@ struct RenderSummary {
     size_t punctual_lights = 0;
     bool environment = false;
     std::string features; // what the kernels were compiled for
+    bool kernels_from_cache = false;
     size_t bvh_nodes = 0;
     int bvh_depth = 0;
     std::string device;

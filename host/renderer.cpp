@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "bvh_builder.h"
 #include "errors.h"
@@ -30,6 +31,16 @@ void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t po
 
 } // namespace
 
+KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
+                                   std::string* features_described) {
+    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    if (features_described)
+        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
+    const std::optional<ProgramCache> cache =
+        settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
+    return build_kernel_program(device, "wavefront.cl", feature_defines(features), cache ? &*cache : nullptr);
+}
+
 Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
                    const RenderSettings& requested)
     : device_(device) {
@@ -49,9 +60,8 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
                                   size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
 
     check_shared_layouts(device);
-    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
-    program_ = build_kernel_program(device, "wavefront.cl", feature_defines(features));
-    summary_.features = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
+    program_ = build_render_program(device, scene, settings, &summary_.features);
+    summary_.kernels_from_cache = program_.from_cache;
     device_scene_ = upload_scene(device.context, data);
     scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_,
                                                       make_device_camera(camera, size), settings);

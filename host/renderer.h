@@ -17,6 +17,12 @@
 
 namespace wf {
 
+// The stage kernels for `scene`: compiled for its features unless
+// settings.specialize is off, through the program cache in settings.cache_dir
+// if one is set. `features_described`, if given, receives what was compiled in.
+KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
+                                   std::string* features_described = nullptr);
+
 class Renderer {
 public:
     // Throws InputError when the render cannot fit the device, before allocating.

@@ -38,6 +38,7 @@ struct RenderSettings {
     uint32_t sampler = WF_SAMPLER_INDEPENDENT;
     uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
     bool specialize = true;     // compile the kernels for the scene's features (host/scene_features.h)
+    std::string cache_dir;      // where compiled programs are kept (host/program_cache.h); empty: nowhere
 };
 
 enum Stage { STAGE_GENERATE, STAGE_INTERSECT, STAGE_SHADE, STAGE_INTERSECT_SHADOW, STAGE_ROULETTE, STAGE_ACCUMULATE, STAGE_COUNT };
