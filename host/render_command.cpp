@@ -10,6 +10,8 @@
 #include <iomanip>
 #include <ostream>
 
+#include <unistd.h>
+
 #include "environment_map.h"
 #include "errors.h"
 #include "gltf_loader.h"
@@ -124,7 +126,11 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const OpenClDevice device = open_device(options.device);
     RenderSettings settings = options.settings;
     settings.cache_dir = cache_directory(options.cache_dir);
+    // Compiling takes seconds on a cold cache: say so on a terminal, then erase the line.
+    const bool terminal = ::isatty(STDERR_FILENO);
+    if (terminal) log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
     Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
+    if (terminal) log << "\r\33[K" << std::flush;
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     CheckpointLog checkpoints(out, options.report_csv);

@@ -52,10 +52,15 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     }
     out << " (bounces per sample)\n";
     out << "stage              launches     seconds   share\n";
-    for (const StageTime& t : st.stages)
-        out << "  " << std::left << std::setw(18) << t.name << std::right << std::setw(8) << t.launches
-            << std::setw(12) << std::setprecision(3) << t.seconds << std::setw(7) << std::setprecision(1)
-            << 100.0 * per_second(t.seconds, kernel) << "%\n";
+    for (const StageTime& t : st.stages) {
+        out << "  " << std::left << std::setw(18) << t.name << std::right;
+        if (t.launches == 0 && st.iterations > 0) { // a stage the scene cannot use
+            out << "  left out\n";
+            continue;
+        }
+        out << std::setw(8) << t.launches << std::setw(12) << std::setprecision(3) << t.seconds << std::setw(7)
+            << std::setprecision(1) << 100.0 * per_second(t.seconds, kernel) << "%\n";
+    }
 }
 
 } // namespace wf
