@@ -249,5 +249,32 @@ TEST(Materials, AlphaMaskCutsOutInShadowAndCameraRays) {
                     << (out == &below ? "below" : "above") << ", pixel " << i << ", " << j;
 }
 
+// Russian roulette stays unbiased on glossy surfaces, where the throughput,
+// and so the survival probability, depends on the sampled direction: its
+// random number must be independent of the numbers that chose the direction.
+// Two rough metal balls facing each other under a sky, so paths bounce many
+// times: roulette from the first bounce against no roulette at all.
+TEST(Materials, RouletteIsUnbiasedOnGlossySurfaces) {
+    Scene scene;
+    const uint32_t metal = add_material(scene, glm::vec3(0.9f, 0.8f, 0.6f), 1.0f, 0.4f, 0.0f);
+    add_ball(scene, {-1.05f, 0, 0}, 1.0f, metal);
+    add_ball(scene, {1.05f, 0, 0}, 1.0f, metal);
+    scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    const SceneCamera camera = test::camera_looking({0, 0.4f, 4}, {0, -0.1f, -1}, {0, 1, 0}, 0.7f);
+    RenderSettings settings;
+    settings.spp = 256;
+    settings.max_depth = 12;
+    settings.roulette_depth = 0;
+    const RenderOutput roulette = render_scene(test::cpu_device(), scene, camera, ImageSize{32, 32}, settings);
+    settings.roulette_depth = 100;
+    settings.seed = 1;
+    const RenderOutput none = render_scene(test::cpu_device(), scene, camera, ImageSize{32, 32}, settings);
+    const double z = test::max_block_z(roulette.film, none.film, 8);
+    const double bound = test::bonferroni_threshold(0.01, 16 * 3);
+    test::report_measured("roulette against none on glossy metal: max 8x8-block |z| " + std::to_string(z) +
+                          " (bound " + std::to_string(bound) + ")");
+    EXPECT_LT(z, bound);
+}
+
 } // namespace
 } // namespace wf

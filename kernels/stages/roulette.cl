@@ -12,8 +12,10 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
     if (depth < params->roulette_depth) return true;
     const float3 throughput = path->throughput[slot].xyz;
     const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
-    /* The third number of the BSDF group of the bounce that chose this ray. */
-    const float u = sample_values(params, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).z;
+    /* The fourth number of the BSDF group of the bounce that chose this ray;
+     * bsdf_sample uses the first three, so the choice to go on is independent
+     * of the direction (and of the throughput that direction gave). */
+    const float u = sample_values(params, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).w;
     if (!(u < q)) return false;
     path->throughput[slot].xyz = throughput / q;
     return true;

@@ -172,7 +172,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     }
 
     /* The continuation, by BSDF sampling. */
-    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF);
+    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF); /* u.w: roulette's */
     const BsdfSample bs = bsdf_sample(&bsdf, wo, u.xyz);
     const float3 wi = from_local(&frame, bs.wi);
     if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
