@@ -133,11 +133,18 @@ void WavefrontScheduler::render_to(uint32_t spp) {
         events.emplace_back(STAGE_INTERSECT, launch(STAGE_INTERSECT, active));
         events.emplace_back(STAGE_SHADE, launch(STAGE_SHADE, active));
         queue.enqueueFillBuffer(pool_.counters, 0u, 0, 2 * sizeof(cl_uint)); // EXTEND, REGENERATE
-        // Without lights no shadow ray is ever queued: the stage is left out.
-        if (params_.light_count > 0)
-            events.emplace_back(STAGE_INTERSECT_SHADOW, launch(STAGE_INTERSECT_SHADOW, active));
-        events.emplace_back(STAGE_ROULETTE, launch(STAGE_ROULETTE, active));
-        events.emplace_back(STAGE_ACCUMULATE, launch(STAGE_ACCUMULATE, active));
+        // The queues shade filled, read before their stages so that each is
+        // launched at its own length, and not at all when empty (a scene
+        // without lights never launches intersect_shadow). Roulette moves
+        // some of its paths to the finished queue, so accumulate is sized
+        // for both; its kernel stops at the queue's final length.
+        queue.enqueueReadBuffer(pool_.counters, CL_TRUE, WF_QUEUE_SHADOW * sizeof(cl_uint), 3 * sizeof(cl_uint),
+                                &counters[WF_QUEUE_SHADOW]);
+        const uint32_t shadowed = counters[WF_QUEUE_SHADOW], continuing = counters[WF_QUEUE_CONTINUE];
+        const uint32_t finishing = counters[WF_QUEUE_FINISHED] + continuing;
+        if (shadowed) events.emplace_back(STAGE_INTERSECT_SHADOW, launch(STAGE_INTERSECT_SHADOW, shadowed));
+        if (continuing) events.emplace_back(STAGE_ROULETTE, launch(STAGE_ROULETTE, continuing));
+        if (finishing) events.emplace_back(STAGE_ACCUMULATE, launch(STAGE_ACCUMULATE, finishing));
         queue.enqueueReadBuffer(pool_.counters, CL_TRUE, 0, sizeof(counters), counters.data());
         queue.enqueueFillBuffer(pool_.counters, 0u, 2 * sizeof(cl_uint), (WF_COUNTER_COUNT - 2) * sizeof(cl_uint));
 
