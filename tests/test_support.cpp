@@ -4,7 +4,6 @@
 #include <sys/wait.h>
 
 #include "kernel_program.h"
-#include "path_pool.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,37 +64,8 @@ Scene furnace_box(float albedo, float emission) {
 std::vector<cl_float4> intersect_on_device(const DeviceSceneData& data, const std::vector<TestRay>& rays) {
     const OpenClDevice& device = cpu_device();
     const DeviceScene uploaded = upload_scene(device.context, data);
-    const auto count = static_cast<uint32_t>(rays.size());
-    std::vector<cl_float4> origins(count), directions(count);
-    std::vector<cl_uint> queue(count);
-    for (uint32_t i = 0; i < count; ++i) {
-        const TestRay& r = rays[i];
-        origins[i] = {{r.origin.x, r.origin.y, r.origin.z, 0.0f}};
-        directions[i] = {{r.direction.x, r.direction.y, r.direction.z, 0.0f}};
-        queue[i] = i;
-    }
-    PathPool pool(device.context, count);
-    RenderParams params{};
-    params.pool_size = count;
-    std::vector<cl_uint> counters(WF_COUNTER_COUNT, 0u);
-    counters[WF_QUEUE_EXTEND] = count;
-    const cl::CommandQueue& q = device.queue;
-    q.enqueueWriteBuffer(pool.field(PathField::ray_origin), CL_FALSE, 0, count * sizeof(cl_float4), origins.data());
-    q.enqueueWriteBuffer(pool.field(PathField::ray_direction), CL_FALSE, 0, count * sizeof(cl_float4),
-                         directions.data());
-    q.enqueueWriteBuffer(pool.queues, CL_FALSE, 0, count * sizeof(cl_uint), queue.data());
-    q.enqueueWriteBuffer(pool.counters, CL_FALSE, 0, counters.size() * sizeof(cl_uint), counters.data());
     const KernelProgram program = build_kernel_program(device, "wavefront.cl");
-    cl::Kernel intersect(program.program, "intersect");
-    const cl_uint next = pool.set_stage_args(intersect, params);
-    intersect.setArg(next, uploaded.nodes);
-    intersect.setArg(next + 1, uploaded.triangles);
-    set_texture_args(intersect, next + 2, uploaded.textures);
-    // Rounded up to whole work-groups; the kernel stops at the queue length.
-    q.enqueueNDRangeKernel(intersect, cl::NullRange, cl::NDRange((count + 63) / 64 * 64), cl::NDRange(64));
-    std::vector<cl_float4> hits(count);
-    q.enqueueReadBuffer(pool.field(PathField::hit), CL_TRUE, 0, count * sizeof(cl_float4), hits.data());
-    return hits;
+    return RayBatch(device, program.program, uploaded, rays).closest_hits().hits;
 }
 
 ChannelStats channel_stats(const Image& image, int channel) {

@@ -10,6 +10,7 @@
 #include "device_scene.h"
 #include "film.h"
 #include "opencl_device.h"
+#include "ray_batch.h"
 #include "scene.h"
 
 namespace wf::test {
@@ -36,13 +37,11 @@ void report_measured(const std::string& line);
 Scene furnace_box(float albedo, float emission);
 
 // A ray for the device tests; the direction need not be unit.
-struct TestRay {
-    glm::vec3 origin;
-    glm::vec3 direction;
-};
+using TestRay = BatchRay;
 
 // The `intersect` stage kernel run over one queue holding `rays`, on
-// cpu_device(); the hits as it stores them: (t, u, v, triangle index bits).
+// cpu_device() (host/ray_batch.h); the hits as it stores them: (t, u, v,
+// triangle index bits).
 std::vector<cl_float4> intersect_on_device(const DeviceSceneData& data, const std::vector<TestRay>& rays);
 
 struct ChannelStats {

@@ -1,0 +1,262 @@
+// ray_throughput.cpp — `wavefront_ray_bench`: how many rays per second the
+// renderer's traversal kernels trace on the OpenCL device, against Embree on
+// the CPU, over the very same rays in the same run (the throughput study's
+// measurement: ours against Embree's single-ray API, same rays, same threads).
+//
+//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--json OUT.json]
+//
+// Three sets of about N rays each: the camera rays of one sample per pixel
+// (coherent), diffuse bounces from points spread over the surfaces by area
+// (incoherent), and shadow segments between two such points (any hit). Our
+// times are the kernels' own, from profiling events; Embree's the wall time of
+// T threads. Each is the best of three runs after one warm-up, which for the
+// kernels is where PoCL compiles them for the launch. PoCL is held to T
+// threads too (POCL_MAX_PTHREAD_COUNT), unless the environment already says.
+//
+// Exit codes as for `wavefront`: 0, 1 (the machine failed, or the tracers
+// disagree on more than 0.1% of some set's rays), 2 (the input is at fault).
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bvh_builder.h"
+#include "camera.h"
+#include "device_scene.h"
+#include "embree_tracer.h"
+#include "errors.h"
+#include "gltf_loader.h"
+#include "hit_agreement.h"
+#include "layout_check.h"
+#include "opencl_device.h"
+#include "ray_batch.h"
+#include "renderer.h"
+#include "scene_features.h"
+#include "surface_rays.h"
+
+namespace wf::bench {
+namespace {
+
+constexpr double kMaxMismatch = 1e-3;
+
+struct Options {
+    std::string scene;
+    uint32_t rays = 1u << 20;
+    unsigned threads = 2;
+    std::string json;
+};
+
+uint32_t positive(const std::string& flag, const std::string& value) {
+    std::istringstream in(value);
+    unsigned long n = 0;
+    if (!(in >> n) || !in.eof() || n == 0 || n > 1u << 28)
+        throw InputError(flag + " " + value + ": expected a whole number from 1 to 2^28");
+    return static_cast<uint32_t>(n);
+}
+
+Options parse(int argc, const char** argv) {
+    const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--json OUT.json]";
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool has_value = i + 1 < argc;
+        if (a == "--rays" && has_value) o.rays = positive(a, argv[++i]);
+        else if (a == "--threads" && has_value) o.threads = positive(a, argv[++i]);
+        else if (a == "--json" && has_value) o.json = argv[++i];
+        else if (a.rfind("--", 0) != 0 && o.scene.empty()) o.scene = a;
+        else throw InputError("unexpected argument '" + a + "'; " + usage);
+    }
+    if (o.scene.empty()) throw InputError(usage);
+    return o;
+}
+
+// One warm-up run, then the best of three by `seconds`.
+template <class Run, class Result> Result best_of_three(const Run& run, double Result::*seconds) {
+    run();
+    Result best = run();
+    for (int k = 0; k < 2; ++k) {
+        Result r = run();
+        if (r.*seconds < best.*seconds) best = std::move(r);
+    }
+    return best;
+}
+
+struct Row {
+    std::string set;
+    size_t rays = 0;
+    double ours_seconds = 0.0, embree_seconds = 0.0;
+    std::optional<double> packet_seconds; // rtcIntersect8, for the camera rays
+    Agreement agreement, packet_agreement;
+};
+
+double mrays(size_t rays, double seconds) { return rays / seconds * 1e-6; }
+
+// The camera image with about `rays` pixels, in the camera's aspect.
+ImageSize image_of_about(uint32_t rays, const std::optional<SceneCamera>& camera) {
+    const ImageSize typical = resolve_image_size(0, 0, camera);
+    const double scale = std::sqrt(static_cast<double>(rays) / (static_cast<double>(typical.width) * typical.height));
+    return resolve_image_size(std::max(1u, static_cast<uint32_t>(std::lround(typical.width * scale))), 0, camera);
+}
+
+Row closest_row(const std::string& set, const RayBatch& batch, const std::vector<BatchRay>& rays,
+                const EmbreeScene& embree, const Bvh& bvh, bool packets) {
+    Row row;
+    row.set = set;
+    row.rays = rays.size();
+    const ClosestHits ours = best_of_three([&] { return batch.closest_hits(); }, &ClosestHits::kernel_seconds);
+    const EmbreeHits theirs = best_of_three([&] { return embree.intersect1(rays); }, &EmbreeHits::seconds);
+    row.ours_seconds = ours.kernel_seconds;
+    row.embree_seconds = theirs.seconds;
+    row.agreement = compare_closest(ours, theirs, bvh.order);
+    if (packets) {
+        const EmbreeHits packet = best_of_three([&] { return embree.intersect8(rays); }, &EmbreeHits::seconds);
+        row.packet_seconds = packet.seconds;
+        row.packet_agreement = compare_closest(ours, packet, bvh.order);
+    }
+    return row;
+}
+
+Row any_row(const std::string& set, const RayBatch& batch, const std::vector<BatchRay>& rays,
+            const EmbreeScene& embree) {
+    Row row;
+    row.set = set;
+    row.rays = rays.size();
+    const AnyHits ours = best_of_three([&] { return batch.any_hits(); }, &AnyHits::kernel_seconds);
+    const EmbreeOcclusion theirs = best_of_three([&] { return embree.occluded1(rays); }, &EmbreeOcclusion::seconds);
+    row.ours_seconds = ours.kernel_seconds;
+    row.embree_seconds = theirs.seconds;
+    row.agreement = compare_any(ours, theirs);
+    return row;
+}
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out + "\"";
+}
+
+struct Report {
+    std::string scene, device, features;
+    size_t triangles = 0;
+    unsigned threads = 0;
+    std::vector<Row> rows;
+};
+
+void print_table(std::ostream& out, const Report& r) {
+    out << "scene    " << r.scene << " (" << r.triangles << " triangles; compiled for: " << r.features << ")\n"
+        << "device   " << r.device << "; Embree on " << r.threads << " threads\n\n";
+    out << std::left << std::setw(10) << "set" << std::right << std::setw(10) << "rays" << std::setw(12) << "ours"
+        << std::setw(12) << "Embree 1" << std::setw(13) << "ours/Embree" << std::setw(12) << "Embree 8"
+        << std::setw(12) << "agreement" << "   (Mrays/s; agreement: hits as Embree's rtcIntersect1/rtcOccluded1)\n";
+    out << std::fixed;
+    for (const Row& row : r.rows) {
+        const double ours = mrays(row.rays, row.ours_seconds), embree = mrays(row.rays, row.embree_seconds);
+        std::ostringstream packet;
+        if (row.packet_seconds) packet << std::fixed << std::setprecision(2) << mrays(row.rays, *row.packet_seconds);
+        else packet << "-";
+        out << std::left << std::setw(10) << row.set << std::right << std::setw(10) << row.rays << std::setprecision(2)
+            << std::setw(12) << ours << std::setw(12) << embree << std::setw(13) << ours / embree << std::setw(12)
+            << packet.str() << std::setprecision(3) << std::setw(11) << 100.0 * row.agreement.fraction() << "%\n";
+    }
+    for (const Row& row : r.rows) {
+        const Agreement& a = row.agreement;
+        if (a.agree != a.rays)
+            out << row.set << ": " << a.rays - a.agree << " disagree (" << a.ours_only << " hit by us alone, "
+                << a.embree_only << " by Embree alone, " << a.other_triangle << " another triangle, " << a.other_t << " t off by more than "
+                << std::defaultfloat << kTTolerance << " relative)\n" << std::fixed;
+    }
+}
+
+void write_json(const std::string& path, const Report& r) {
+    std::ofstream out(path);
+    out << std::setprecision(6) << "{\n  \"scene\": " << json_string(r.scene) << ",\n  \"triangles\": " << r.triangles
+        << ",\n  \"device\": " << json_string(r.device) << ",\n  \"features\": " << json_string(r.features)
+        << ",\n  \"threads\": " << r.threads << ",\n  \"sets\": [";
+    for (size_t i = 0; i < r.rows.size(); ++i) {
+        const Row& row = r.rows[i];
+        const double ours = mrays(row.rays, row.ours_seconds), embree = mrays(row.rays, row.embree_seconds);
+        out << (i ? "," : "") << "\n    {\"set\": " << json_string(row.set) << ", \"rays\": " << row.rays
+            << ", \"ours_mrays_per_s\": " << ours << ", \"embree_mrays_per_s\": " << embree
+            << ", \"ours_over_embree\": " << ours / embree << ", \"agreement\": " << row.agreement.fraction();
+        if (row.packet_seconds)
+            out << ", \"embree_packet8_mrays_per_s\": " << mrays(row.rays, *row.packet_seconds)
+                << ", \"packet8_agreement\": " << row.packet_agreement.fraction();
+        out << "}";
+    }
+    out << "\n  ]\n}\n";
+    if (!out) throw InputError(path + ": cannot write the JSON report");
+}
+
+int run(const Options& options) {
+    const Scene scene = load_gltf(options.scene);
+    setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
+    const OpenClDevice device = open_device("cpu");
+    check_shared_layouts(device);
+    const Bvh bvh = build_bvh(scene.positions);
+    const DeviceScene uploaded = upload_scene(device.context, make_device_scene_data(scene, bvh));
+    Report report;
+    const KernelProgram program = build_render_program(device, scene, RenderSettings{}, &report.features);
+    const EmbreeScene embree(scene.positions, options.threads);
+    report.scene = options.scene;
+    report.triangles = scene.triangle_count();
+    report.threads = options.threads;
+    report.device = device.info.name + " (" + std::to_string(device.info.compute_units) + " compute units, " +
+                    device.info.platform + " " + device.info.driver + ")";
+    if (scene_features(scene).alpha_mask)
+        std::cerr << "warning: the kernels skip alpha-masked texels and Embree does not: expect disagreement\n";
+
+    const SceneCamera camera = scene.camera ? *scene.camera : frame_bounds(scene.bounds());
+    {
+        const RayBatch batch(device, program.program, uploaded,
+                             make_device_camera(camera, image_of_about(options.rays, scene.camera)), 0);
+        report.rows.push_back(closest_row("camera", batch, batch.rays(), embree, bvh, true));
+    }
+    {
+        const std::vector<BatchRay> rays = bounce_rays(scene, options.rays, 1);
+        report.rows.push_back(closest_row("bounce", RayBatch(device, program.program, uploaded, rays), rays, embree,
+                                          bvh, false));
+    }
+    {
+        const std::vector<BatchRay> rays = shadow_segments(scene, options.rays, 2);
+        report.rows.push_back(any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree));
+    }
+
+    print_table(std::cout, report);
+    if (!options.json.empty()) write_json(options.json, report);
+    for (const Row& row : report.rows)
+        for (const Agreement* a : {&row.agreement, &row.packet_agreement})
+            if (1.0 - a->fraction() > kMaxMismatch) {
+                std::cerr << "error: " << row.set << " rays: the kernels and Embree disagree on "
+                          << std::setprecision(3) << 100.0 * (1.0 - a->fraction()) << "% of rays (at most "
+                          << 100.0 * kMaxMismatch << "% allowed)\n";
+                return 1;
+            }
+    return 0;
+}
+
+} // namespace
+} // namespace wf::bench
+
+int main(int argc, const char** argv) {
+    try {
+        return wf::bench::run(wf::bench::parse(argc, argv));
+    } catch (const wf::InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
+    } catch (const cl::Error& e) {
+        std::cerr << "error: OpenCL call " << e.what() << " failed with code " << e.err() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}
