@@ -129,6 +129,10 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
     ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: 262144)");
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
+    ap.arg("--integrator I").help("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image (default: wavefront)");
+    ap.arg("--schedule S").help("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X) (default: refill)");
+    ap.arg("--local-size N").help("Work-items per work-group, 16 to 1024 (default: 64)");
+    ap.arg("--stats-json FILE").help("Write the render's statistics (stage times, rays, counters per iteration) as JSON");
     ap.separator("Sampling techniques:");
     ap.arg("--light-sampling T").help("How emitters are found: bsdf, nee or mis (default: mis)");
     ap.arg("--hemisphere H").help("Lambertian sampling: uniform or cosine (default: cosine)");
@@ -178,6 +182,17 @@ CommandLine parse_command_line(int argc, const char** argv) {
         parse_choice("--aov", text("aov"), {"bounces"});
         o.settings.bounce_layers = 8;
     }
+    if (!text("integrator").empty())
+        o.settings.integrator =
+            static_cast<Integrator>(parse_choice("--integrator", text("integrator"), {"wavefront", "megakernel"}));
+    if (!text("schedule").empty()) {
+        o.settings.schedule =
+            static_cast<Schedule>(parse_choice("--schedule", text("schedule"), {"refill", "passes", "fullest"}));
+        if (o.settings.integrator == Integrator::Megakernel)
+            throw InputError("--schedule orders the wavefront's stages; the megakernel has none");
+    }
+    if (!text("local-size").empty()) o.settings.local_size = parse_count("--local-size", text("local-size"), 16, 1024);
+    o.stats_json = text("stats-json");
     o.settings.specialize = !ap["no-specialize"].get<int>();
     o.cache_dir = text("cache-dir");
     o.environment = text("env");

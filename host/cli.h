@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "progressive_render.h"
-#include "wavefront_scheduler.h"
+#include "path_integrator.h"
 
 namespace wf {
 
@@ -28,6 +28,7 @@ struct RenderOptions {
     ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
     std::string reference;    // an image to report the error against
     std::string report_csv;   // where to write the checkpoints as CSV
+    std::string stats_json;   // where to write the render's statistics (render_stats_json.h)
 };
 
 // `wavefront cache warm|clear`.

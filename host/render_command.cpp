@@ -18,6 +18,7 @@
 #include "image_io.h"
 #include "program_cache.h"
 #include "progressive_render.h"
+#include "render_stats_json.h"
 #include "renderer.h"
 
 namespace wf {
@@ -149,6 +150,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     summary.scene = options.scene;
     summary.output = options.output;
     summary.times.load = load_seconds;
+    if (!options.stats_json.empty()) write_stats_json(options.stats_json, summary);
     return summary;
 }
 

@@ -38,7 +38,12 @@ void print_report(std::ostream& out, const RenderSummary& s) {
         << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow)\n";
     out << "memory     " << std::setprecision(1) << s.device_bytes / 1048576.0 << " MiB on the device; pool "
         << st.pool_size << " paths\n";
-    out << "schedule   " << st.iterations << " iterations; kernels " << std::setprecision(3) << kernel
+    const bool megakernel = st.integrator == Integrator::Megakernel;
+    out << "schedule   " << integrator_name(st.integrator);
+    if (megakernel) out << ": " << st.iterations << " launches";
+    else out << ", " << schedule_name(st.schedule) << ": " << st.iterations << " iterations";
+    out << ", pool occupancy " << std::setprecision(1) << 100.0 * st.pool_occupancy() << "%; kernels "
+        << std::setprecision(3) << kernel
         << " s, host and transfers " << st.seconds - kernel << " s (" << std::setprecision(1)
         << 100.0 * per_second(st.seconds - kernel, st.seconds) << "%)\n";
     out << "path lengths";
@@ -52,7 +57,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     }
     out << " (bounces per sample)\n";
     out << "stage              launches     seconds   share\n";
-    for (const StageTime& t : st.stages) {
+    for (int stage = 0; stage < STAGE_COUNT; ++stage) {
+        if ((stage == STAGE_MEGAKERNEL) != megakernel) continue; // the other integrator's
+        const StageTime& t = st.stages[stage];
         out << "  " << std::left << std::setw(18) << t.name << std::right;
         if (t.launches == 0 && st.iterations > 0) { // a stage the scene cannot use
             out << "  left out\n";

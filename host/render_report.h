@@ -5,7 +5,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "wavefront_scheduler.h"
+#include "path_integrator.h"
 
 namespace wf {
 
@@ -29,6 +29,7 @@ struct RenderSummary {
     std::string device;
     uint32_t width = 0, height = 0, spp = 0;
     size_t device_bytes = 0;
+    size_t traversal_bytes = 0; // the BVH nodes and the triangles they hold: what intersection reads
     RenderTimes times;
     RenderStats stats;
     std::string output;

@@ -9,8 +9,10 @@
 #include "bvh_builder.h"
 #include "errors.h"
 #include "layout_check.h"
+#include "megakernel_scheduler.h"
 #include "path_pool.h"
 #include "scene_features.h"
+#include "wavefront_scheduler.h"
 
 namespace wf {
 namespace {
@@ -38,7 +40,8 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
         *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
     const std::optional<ProgramCache> cache =
         settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
-    return build_kernel_program(device, "wavefront.cl", feature_defines(features), cache ? &*cache : nullptr);
+    const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
+    return build_kernel_program(device, root, feature_defines(features), cache ? &*cache : nullptr);
 }
 
 Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
@@ -63,8 +66,13 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     program_ = build_render_program(device, scene, settings, &summary_.features);
     summary_.kernels_from_cache = program_.from_cache;
     device_scene_ = upload_scene(device.context, data);
-    scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_,
-                                                      make_device_camera(camera, size), settings);
+    const Camera device_camera = make_device_camera(camera, size);
+    if (settings.integrator == Integrator::Megakernel)
+        scheduler_ = std::make_unique<MegakernelScheduler>(device, program_.program, device_scene_, device_camera,
+                                                           settings);
+    else
+        scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_, device_camera,
+                                                          settings);
 
     summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
                       " compute units, " + device.info.platform + ")";
@@ -76,6 +84,7 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     summary_.environment = data.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
+    summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(Triangle);
     summary_.width = size.width;
     summary_.height = size.height;
     summary_.device_bytes = device_scene_.bytes + scheduler_->stats().pool_bytes + scheduler_->film().bytes();

@@ -1,6 +1,6 @@
 // renderer.h — a scene made ready on one device: its BVH built and uploaded,
 // the memory it needs checked against the device, the kernels built and the
-// wavefront scheduler set up. It then renders in rounds, and its film can be
+// integrator (wavefront or megakernel) set up. It then renders in rounds, and its film can be
 // read between them. The command line and the tests both go through it.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include "opencl_device.h"
 #include "render_report.h"
 #include "scene.h"
-#include "wavefront_scheduler.h"
+#include "path_integrator.h"
 
 namespace wf {
 
@@ -42,7 +42,7 @@ private:
     RenderSummary summary_;
     DeviceScene device_scene_;
     KernelProgram program_;
-    std::unique_ptr<WavefrontScheduler> scheduler_;
+    std::unique_ptr<PathIntegrator> scheduler_;
 };
 
 } // namespace wf

@@ -49,14 +49,16 @@ typedef struct RenderParams {
 #define WF_UNLIMITED_DEPTH 0xffffffffu
 
 /* The queues: index buffers of path slots, one region of pool_size entries per
- * queue in one buffer, each with a counter in the counter buffer. Shade drains
- * EXTEND whole before roulette refills it, so one extension queue serves. The
- * numbering lets the host clear the counters of each phase with one fill:
- * [EXTEND, REGENERATE] once shade has consumed them, the rest at the end of
- * every iteration, after it has read them. */
+ * queue in one buffer, each with a counter in the counter buffer. A slot is in
+ * one queue at a time, and each queue has one consumer, which takes it whole
+ * before the host zeroes its counter (host/wavefront_scheduler.cpp); so the
+ * stages may run in any order, and one extension queue serves both generate
+ * and roulette. The numbering lets the refill schedule clear the counters of
+ * each phase with one fill: [EXTEND, REGENERATE] once shade has consumed them,
+ * the rest at the end of every iteration, after it has read them. */
 #define WF_QUEUE_EXTEND 0     /* paths whose ray needs a closest hit, then shading */
 #define WF_QUEUE_REGENERATE 1 /* free slots, to receive the next camera sample */
-#define WF_QUEUE_SHADOW 2     /* paths with a pending shadow ray */
+#define WF_QUEUE_SHADOW 2     /* paths with a pending shadow ray, before roulette or accumulation */
 #define WF_QUEUE_CONTINUE 3   /* shaded paths with a new ray, before roulette */
 #define WF_QUEUE_FINISHED 4   /* ended paths, to accumulate */
 #define WF_QUEUE_COUNT 5
@@ -72,6 +74,9 @@ typedef struct RenderParams {
 #define WF_PATH_LENGTH_BUCKETS 16
 #define WF_COUNTER_COUNT (WF_COUNTER_PATH_LENGTHS + WF_PATH_LENGTH_BUCKETS)
 
+/* In shadow_radiance.w: the path has a new ray to follow once its shadow ray is traced. */
+#define WF_SHADOW_THEN_CONTINUE 0x80000000u
+
 /* The path state: a structure of arrays, one array per field, each indexed by
  * path slot. Declared once here; the host allocates a buffer per field and the
  * kernels receive them as one parameter list, in this order.
@@ -84,7 +89,7 @@ typedef struct RenderParams {
     X(float4, radiance, "rgb: radiance gathered so far")                             \
     X(float4, shadow_origin, "xyz: shadow ray origin")                               \
     X(float4, shadow_segment, "xyz: vector to the light point; visible when no hit in (0, 1)") \
-    X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded") \
+    X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded; w: bounce layer | WF_SHADOW_THEN_CONTINUE, as bits") \
     X(uint, pixel, "pixel index of the current sample")                             \
     X(uint, sample, "sample index within the pixel")                                \
     X(uint, depth, "bounces so far: 0 for a camera ray")                            \

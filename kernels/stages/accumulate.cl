@@ -12,6 +12,26 @@
 #include "common/film_add.h"
 #include "common/queue_push.h"
 
+/* Adds the slot's finished sample to its pixel; returns whether it was
+ * dropped as non-finite. */
+inline bool accumulate_path(PathState* path, uint slot, __global float4* film_sum, __global float4* film_compensation,
+                            __global float4* film_sum_squares, __global float4* film_squares_compensation,
+                            __global uint* film_samples) {
+    const uint pixel = path->pixel[slot];
+    const float3 radiance = path->radiance[slot].xyz;
+    const bool nonfinite = !is_finite3(radiance);
+    const float4 x = nonfinite ? (float4)(0.0f) : (float4)(radiance, 0.0f);
+    film_add(film_sum, film_compensation, pixel, x);
+    film_add(film_sum_squares, film_squares_compensation, pixel, x * x);
+    film_samples[pixel] += 1u;
+    return nonfinite;
+}
+
+/* The path-length histogram's bucket for a path of `bounces` bounces. */
+inline uint path_length_bucket(uint bounces) {
+    return bounces == 0u ? 0u : min(32u - clz(bounces), (uint)WF_PATH_LENGTH_BUCKETS - 1u);
+}
+
 __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum, __global float4* film_compensation,
                          __global float4* film_sum_squares, __global float4* film_squares_compensation,
                          __global uint* film_samples) {
@@ -20,19 +40,10 @@ __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum, __global fl
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_FINISHED, &slot);
-    bool nonfinite = false;
-    if (active) {
-        const uint pixel = path.pixel[slot];
-        const float3 radiance = path.radiance[slot].xyz;
-        nonfinite = !is_finite3(radiance);
-        const float4 x = nonfinite ? (float4)(0.0f) : (float4)(radiance, 0.0f);
-        film_add(film_sum, film_compensation, pixel, x);
-        film_add(film_sum_squares, film_squares_compensation, pixel, x * x);
-        film_samples[pixel] += 1u;
-    }
+    const bool nonfinite = active && accumulate_path(&path, slot, film_sum, film_compensation, film_sum_squares,
+                                                     film_squares_compensation, film_samples);
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
-    const uint bounces = active ? path.depth[slot] : 0u;
-    const uint bucket = bounces == 0u ? 0u : min(32u - clz(bounces), (uint)WF_PATH_LENGTH_BUCKETS - 1u);
+    const uint bucket = path_length_bucket(active ? path.depth[slot] : 0u);
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS, bucket, active, histogram);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_REGENERATE, slot, active, scratch);
 }

@@ -164,8 +164,8 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] =
                     (float4)(light_shadow_segment(&ls, origin, 2.0f * params->scene_diameter), 0.0f);
-                /* w: the bounce layer the light joins if it arrives. */
-                path->shadow_radiance[slot] = (float4)(contribution, as_float(depth + 1u));
+                /* w is set below, once the continuation is known. */
+                path->shadow_radiance[slot] = (float4)(contribution, 0.0f);
                 outcome |= WF_SHADE_SHADOW_RAY;
             }
         }
@@ -185,6 +185,11 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
             outcome |= WF_SHADE_CONTINUES;
         }
     }
+    /* What intersect_shadow needs to send the path on: the bounce layer the
+     * light joins if it arrives, and whether the path goes on after it. */
+    if (outcome & WF_SHADE_SHADOW_RAY)
+        path->shadow_radiance[slot].w =
+            as_float((depth + 1u) | ((outcome & WF_SHADE_CONTINUES) ? WF_SHADOW_THEN_CONTINUE : 0u));
     return outcome;
 }
 
@@ -202,11 +207,14 @@ __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                                              environment_texels, environment_distribution, &textures, layers,
                                              layer_compensation)
                                 : WF_SHADE_FINISHED;
+    /* Each path goes to exactly one queue: one with a shadow ray waits for it
+     * (intersect_shadow sends it on), so no stage can overwrite the pending
+     * ray whatever order the scheduler launches them in. */
+    const bool shadow_ray = (outcome & WF_SHADE_SHADOW_RAY) != 0u;
+    const bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot,
-               (outcome & WF_SHADE_SHADOW_RAY) != 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot,
-               (outcome & WF_SHADE_CONTINUES) != 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot,
-               active && !(outcome & WF_SHADE_CONTINUES), scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot, shadow_ray, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, !shadow_ray && continues, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !shadow_ray && !continues,
+               scratch);
 }

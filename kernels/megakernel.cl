@@ -1,0 +1,57 @@
+/* megakernel.cl — the same path tracer as wavefront.cl, in one kernel: each
+ * work-item takes its slot's next sample through the stage functions in turn
+ * (start_camera_sample, intersect_path, shade_path, trace_shadow_ray,
+ * survives_roulette, accumulate_path) until the path ends, then adds it to its
+ * pixel. The functions and their order along a path are the wavefront's, and
+ * the path state lives in the same arrays, so the two integrators give the
+ * same bytes; what differs is only how work is grouped into launches (Laine,
+ * Karras and Aila, "Megakernels Considered Harmful", HPG 2013). */
+#include "stages/generate.cl"
+#include "stages/intersect.cl"
+#include "stages/shade.cl"
+#include "stages/intersect_shadow.cl"
+#include "stages/roulette.cl"
+#include "stages/accumulate.cl"
+
+/* One launch traces one sample for every slot that has samples left. */
+__kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const BvhNode* nodes,
+                         __global const Triangle* triangles, __global const TriangleNormals* normals,
+                         __global const Material* materials, __global const LightEntry* lights,
+                         __global const PunctualLight* punctual, __global const float* environment_texels,
+                         __global const float* environment_distribution, WF_SCENE_TEXTURE_PARAMS,
+                         __global float4* layers, __global float4* layer_compensation, __global float4* film_sum,
+                         __global float4* film_compensation, __global float4* film_sum_squares,
+                         __global float4* film_squares_compensation, __global uint* film_samples) {
+    WF_BIND_PATH_STATE(path);
+    WF_BIND_SCENE_TEXTURES(textures);
+    __local uint scratch[2];
+    __local uint histogram[WF_PATH_LENGTH_BUCKETS];
+    const uint slot = get_global_id(0);
+    const bool started = slot < params.pool_size && start_camera_sample(&path, &params, &camera, slot);
+    uint closest_rays = 0u, shadow_rays = 0u;
+    bool nonfinite = false;
+    if (started) {
+        for (;;) {
+            intersect_path(&path, slot, nodes, triangles, &textures);
+            ++closest_rays;
+            const uint outcome = shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
+                                            environment_texels, environment_distribution, &textures, layers,
+                                            layer_compensation);
+            bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
+            if (outcome & WF_SHADE_SHADOW_RAY) {
+                continues = trace_shadow_ray(&path, &params, slot, nodes, triangles, &textures, layers,
+                                             layer_compensation);
+                ++shadow_rays;
+            }
+            if (!continues || !survives_roulette(&path, &params, slot)) break;
+        }
+        nonfinite = accumulate_path(&path, slot, film_sum, film_compensation, film_sum_squares,
+                                    film_squares_compensation, film_samples);
+    }
+    /* Counted once per work-group, outside the divergent loop (the adds hold barriers). */
+    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
+    group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS,
+                        path_length_bucket(started ? path.depth[slot] : 0u), started, histogram);
+}
