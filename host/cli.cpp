@@ -131,6 +131,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
     ap.arg("--integrator I").help("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image (default: wavefront)");
     ap.arg("--schedule S").help("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X) (default: refill)");
+    ap.arg("--queue-push P").help("How kernels append to queues: group (one atomic per work-group), atomic (one per item) or scan (prefix sum) (default: group)");
     ap.arg("--local-size N").help("Work-items per work-group, 16 to 1024 (default: 64)");
     ap.arg("--stats-json FILE").help("Write the render's statistics (stage times, rays, counters per iteration) as JSON");
     ap.separator("Sampling techniques:");
@@ -192,6 +193,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
             throw InputError("--schedule orders the wavefront's stages; the megakernel has none");
     }
     if (!text("local-size").empty()) o.settings.local_size = parse_count("--local-size", text("local-size"), 16, 1024);
+    if (!text("queue-push").empty())
+        o.settings.queue_push =
+            static_cast<QueuePush>(parse_choice("--queue-push", text("queue-push"), {"group", "atomic", "scan"}));
     o.stats_json = text("stats-json");
     o.settings.specialize = !ap["no-specialize"].get<int>();
     o.cache_dir = text("cache-dir");

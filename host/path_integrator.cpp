@@ -33,6 +33,14 @@ const char* schedule_name(Schedule schedule) {
     }
 }
 
+const char* queue_push_name(QueuePush push) {
+    switch (push) {
+    case QueuePush::Atomic: return "atomic";
+    case QueuePush::Scan: return "scan";
+    default: return "group";
+    }
+}
+
 double RenderStats::kernel_seconds() const {
     return std::accumulate(stages.begin(), stages.end(), 0.0,
                            [](double s, const StageTime& t) { return s + t.seconds; });

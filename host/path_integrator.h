@@ -36,6 +36,10 @@ enum class Schedule {
     Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
 };
 
+// How the kernels append to queues and counters (kernels/common/queue_push.h),
+// in the order of its WF_PUSH_* values.
+enum class QueuePush { Group, Atomic, Scan };
+
 struct RenderSettings {
     uint32_t spp = 16;
     uint32_t max_depth = WF_UNLIMITED_DEPTH;
@@ -51,10 +55,12 @@ struct RenderSettings {
     std::string cache_dir;      // where compiled programs are kept (host/program_cache.h); empty: nowhere
     Integrator integrator = Integrator::Wavefront;
     Schedule schedule = Schedule::Refill; // for the wavefront integrator
+    QueuePush queue_push = QueuePush::Group;
 };
 
 const char* integrator_name(Integrator integrator);
 const char* schedule_name(Schedule schedule);
+const char* queue_push_name(QueuePush push);
 
 enum Stage {
     STAGE_GENERATE,

@@ -20,13 +20,15 @@ PathPool::PathPool(const cl::Context& context, uint32_t pool_size) : size_(pool_
     counters = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_COUNTER_COUNT);
 }
 
-size_t PathPool::bytes_per_path() {
-    size_t bytes = sizeof(cl_uint) * WF_QUEUE_COUNT;
+size_t PathPool::state_bytes_per_path() {
+    size_t bytes = 0;
 #define WF_FIELD_BYTES(type, name, what) bytes += sizeof(type);
     WF_PATH_STATE(WF_FIELD_BYTES)
 #undef WF_FIELD_BYTES
     return bytes;
 }
+
+size_t PathPool::bytes_per_path() { return state_bytes_per_path() + sizeof(cl_uint) * WF_QUEUE_COUNT; }
 
 void PathPool::clear(const cl::CommandQueue& queue) const {
     for (size_t f = 0; f < fields_.size(); ++f)

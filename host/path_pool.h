@@ -38,8 +38,9 @@ public:
     const cl::Buffer& field(PathField f) const { return fields_[static_cast<size_t>(f)]; }
 
     uint32_t size() const { return size_; }
-    // Device memory per path slot: its state plus one entry in every queue.
+    // Device memory per path slot: its state (state_bytes_per_path) plus one entry in every queue.
     static size_t bytes_per_path();
+    static size_t state_bytes_per_path();
     size_t bytes() const { return bytes_per_path() * size_; }
 
     cl::Buffer queues;   // WF_QUEUE_COUNT regions of size() slot indices

@@ -6,6 +6,8 @@
 #include <iomanip>
 #include <ostream>
 
+#include "path_pool.h"
+
 namespace wf {
 namespace {
 
@@ -37,7 +39,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
         << st.shadow_rays << " (" << per_second(st.shadow_rays, st.seconds) * 1e-6 << " M/s wall, "
         << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow)\n";
     out << "memory     " << std::setprecision(1) << s.device_bytes / 1048576.0 << " MiB on the device; pool "
-        << st.pool_size << " paths\n";
+        << st.pool_size << " paths of " << PathPool::state_bytes_per_path() << " bytes, queues "
+        << PathPool::bytes_per_path() - PathPool::state_bytes_per_path() << " bytes a path; BVH and triangles "
+        << per_second(s.traversal_bytes, s.triangles) << " bytes a triangle\n";
     const bool megakernel = st.integrator == Integrator::Megakernel;
     out << "schedule   " << integrator_name(st.integrator);
     if (megakernel) out << ": " << st.iterations << " launches";

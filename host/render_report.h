@@ -29,6 +29,8 @@ struct RenderSummary {
     std::string device;
     uint32_t width = 0, height = 0, spp = 0;
     size_t device_bytes = 0;
+    QueuePush queue_push = QueuePush::Group;
+    uint32_t local_size = 0;
     size_t traversal_bytes = 0; // the BVH nodes and the triangles they hold: what intersection reads
     RenderTimes times;
     RenderStats stats;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "errors.h"
+#include "path_pool.h"
 
 namespace wf {
 
@@ -22,6 +23,8 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["integrator"] = integrator_name(st.integrator);
     j["schedule"] = st.integrator == Integrator::Megakernel ? "none" : schedule_name(st.schedule);
     j["pool_size"] = st.pool_size;
+    j["queue_push"] = queue_push_name(s.queue_push);
+    j["local_size"] = s.local_size;
     j["times"] = {{"load", s.times.load},
                   {"bvh_build", s.times.bvh_build},
                   {"kernel_build", s.times.kernel_build},
@@ -37,6 +40,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["memory"] = {{"device_bytes", s.device_bytes},
                    {"pool_bytes", st.pool_bytes},
                    {"bytes_per_path", st.pool_size ? st.pool_bytes / st.pool_size : 0},
+                   {"path_state_bytes_per_path", PathPool::state_bytes_per_path()},
                    {"traversal_bytes", s.traversal_bytes},
                    {"traversal_bytes_per_triangle", s.triangles ? double(s.traversal_bytes) / s.triangles : 0.0}};
     nlohmann::json stages = nlohmann::json::object();

@@ -41,7 +41,11 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
     const std::optional<ProgramCache> cache =
         settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
     const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
-    return build_kernel_program(device, root, feature_defines(features), cache ? &*cache : nullptr);
+    std::string options = feature_defines(features);
+    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
+        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push)) +
+                   " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
 }
 
 Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
@@ -84,6 +88,8 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     summary_.environment = data.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
+    summary_.queue_push = settings.queue_push;
+    summary_.local_size = settings.local_size;
     summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(Triangle);
     summary_.width = size.width;
     summary_.height = size.height;

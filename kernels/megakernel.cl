@@ -24,7 +24,7 @@ __kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const Bv
                          __global float4* film_squares_compensation, __global uint* film_samples) {
     WF_BIND_PATH_STATE(path);
     WF_BIND_SCENE_TEXTURES(textures);
-    __local uint scratch[2];
+    __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     const uint slot = get_global_id(0);
     const bool started = slot < params.pool_size && start_camera_sample(&path, &params, &camera, slot);
@@ -45,7 +45,7 @@ __kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const Bv
             }
             if (!continues || !survives_roulette(&path, &params, slot)) break;
         }
-        nonfinite = accumulate_path(&path, slot, film_sum, film_compensation, film_sum_squares,
+        nonfinite = accumulate_path(&path, &params, slot, film_sum, film_compensation, film_sum_squares,
                                     film_squares_compensation, film_samples);
     }
     /* Counted once per work-group, outside the divergent loop (the adds hold barriers). */
@@ -53,5 +53,5 @@ __kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const Bv
     group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS,
-                        path_length_bucket(started ? path.depth[slot] : 0u), started, histogram);
+                        path_length_bucket(started ? path_depth(&path, slot) : 0u), started, histogram);
 }

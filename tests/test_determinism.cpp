@@ -52,7 +52,7 @@ TEST(Determinism, RoundsDoNotChangeOneBit) {
     EXPECT_TRUE(same_bytes(render_cornell(1200, 64, 3), progressive.read().mean));
 }
 
-// Every schedule and the megakernel run the same stage functions in the same
+// Every schedule, queue-push strategy and the megakernel run the same stage functions in the same
 // order along each path, and a pixel's samples are still added in order by
 // its one slot: the bytes are the same, on a scene that uses every kind of
 // work (glossy and glass bounces, shadow rays, roulette) and with a pool
@@ -75,6 +75,13 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
         EXPECT_EQ(r.summary.stats.path_lengths, reference.summary.stats.path_lengths) << schedule_name(schedule);
     }
     settings.schedule = Schedule::Refill;
+    for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
+        settings.queue_push = push;
+        const RenderOutput r = render_file(scene, settings);
+        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << queue_push_name(push);
+        EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
+    }
+    settings.queue_push = QueuePush::Group;
     settings.integrator = Integrator::Megakernel;
     const RenderOutput mega = render_file(scene, settings);
     EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));

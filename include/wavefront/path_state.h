@@ -79,20 +79,18 @@ typedef struct RenderParams {
 
 /* The path state: a structure of arrays, one array per field, each indexed by
  * path slot. Declared once here; the host allocates a buffer per field and the
- * kernels receive them as one parameter list, in this order.
+ * kernels receive them as one parameter list, in this order. Eight float4s,
+ * 128 bytes a path: counts ride in w lanes (read through kernels/path_state.h),
+ * and the pixel and sample index follow from the count of samples started.
  *   X(type, name, what-it-holds) */
 #define WF_PATH_STATE(X)                                                             \
     X(float4, ray_origin, "xyz: origin of the ray to trace")                         \
     X(float4, ray_direction, "xyz: direction (unit); w: solid-angle pdf it was sampled with") \
     X(float4, hit, "closest hit: t, barycentric u, v; w: triangle as bits (-1 = miss)") \
-    X(float4, throughput, "rgb: path throughput")                                    \
-    X(float4, radiance, "rgb: radiance gathered so far")                             \
+    X(float4, throughput, "rgb: path throughput; w: bounces so far, 0 for a camera ray, as bits") \
+    X(float4, radiance, "rgb: radiance gathered so far; w: samples the slot has started, as bits") \
     X(float4, shadow_origin, "xyz: shadow ray origin")                               \
     X(float4, shadow_segment, "xyz: vector to the light point; visible when no hit in (0, 1)") \
-    X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded; w: bounce layer | WF_SHADOW_THEN_CONTINUE, as bits") \
-    X(uint, pixel, "pixel index of the current sample")                             \
-    X(uint, sample, "sample index within the pixel")                                \
-    X(uint, depth, "bounces so far: 0 for a camera ray")                            \
-    X(uint, work_done, "samples this slot has started: its position in its pixel sequence")
+    X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded; w: bounce layer | WF_SHADOW_THEN_CONTINUE, as bits")
 
 #endif /* WAVEFRONT_PATH_STATE_H */

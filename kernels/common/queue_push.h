@@ -1,16 +1,54 @@
-/* queue_push.h — appending path slots to a queue, and counting, with one
- * global atomic per work-group and counter, not per item (on PoCL a per-item
- * global atomic costs about 100 plain writes).
+/* queue_push.h — appending path slots to a queue, and counting.
+ *
+ * WF_QUEUE_PUSH picks how (--queue-push; the image is the same either way):
+ *   WF_PUSH_GROUP  (default) one global atomic per work-group and counter,
+ *                  after the group's shares are gathered by local atomics;
+ *   WF_PUSH_ATOMIC one global atomic per work-item (on PoCL about 100 plain
+ *                  writes' worth each: the baseline the others are measured by);
+ *   WF_PUSH_SCAN   a prefix sum over the work-group in local memory, then one
+ *                  global atomic: order-preserving compaction (WF_LOCAL_SIZE
+ *                  must be the launch's local size).
  *
  * Contract: every work-item of the group calls these functions, in the same
- * order, outside any divergent branch (they hold barriers). `scratch` is two
- * __local uints declared once at kernel scope. */
+ * order, outside any divergent branch (they hold barriers). `scratch` is
+ * WF_QUEUE_SCRATCH __local uints declared once at kernel scope. */
 #ifndef WF_QUEUE_PUSH_H
 #define WF_QUEUE_PUSH_H
+
+#define WF_PUSH_GROUP 0
+#define WF_PUSH_ATOMIC 1
+#define WF_PUSH_SCAN 2
+#ifndef WF_QUEUE_PUSH
+#define WF_QUEUE_PUSH WF_PUSH_GROUP
+#endif
+
+#if WF_QUEUE_PUSH == WF_PUSH_SCAN
+#define WF_QUEUE_SCRATCH (WF_LOCAL_SIZE + 1)
+#else
+#define WF_QUEUE_SCRATCH 2
+#endif
 
 /* Adds `amount` from each work-item to `*counter`; returns the value of the
  * counter where this work-item's share starts. */
 inline uint group_atomic_add(volatile __global uint* counter, uint amount, __local uint* scratch) {
+#if WF_QUEUE_PUSH == WF_PUSH_ATOMIC
+    return amount ? atomic_add(counter, amount) : 0u;
+#elif WF_QUEUE_PUSH == WF_PUSH_SCAN
+    /* Hillis-Steele inclusive scan; scratch[WF_LOCAL_SIZE] carries the group's base. */
+    const uint lid = get_local_id(0);
+    scratch[lid] = amount;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (uint offset = 1; offset < WF_LOCAL_SIZE; offset <<= 1) {
+        const uint before = lid >= offset ? scratch[lid - offset] : 0u;
+        barrier(CLK_LOCAL_MEM_FENCE);
+        scratch[lid] += before;
+        barrier(CLK_LOCAL_MEM_FENCE);
+    }
+    const uint inclusive = scratch[lid];
+    if (lid == WF_LOCAL_SIZE - 1) scratch[WF_LOCAL_SIZE] = inclusive ? atomic_add(counter, inclusive) : 0u;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    return scratch[WF_LOCAL_SIZE] + inclusive - amount;
+#else
     if (get_local_id(0) == 0) scratch[0] = 0;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint offset_in_group = amount ? atomic_add(&scratch[0], amount) : 0;
@@ -18,6 +56,7 @@ inline uint group_atomic_add(volatile __global uint* counter, uint amount, __loc
     if (get_local_id(0) == 0) scratch[1] = scratch[0] ? atomic_add(counter, scratch[0]) : 0;
     barrier(CLK_LOCAL_MEM_FENCE);
     return scratch[1] + offset_in_group;
+#endif
 }
 
 /* Appends `slot` to queue `queue` when `push` holds. */

@@ -14,10 +14,10 @@
 
 /* Adds the slot's finished sample to its pixel; returns whether it was
  * dropped as non-finite. */
-inline bool accumulate_path(PathState* path, uint slot, __global float4* film_sum, __global float4* film_compensation,
-                            __global float4* film_sum_squares, __global float4* film_squares_compensation,
-                            __global uint* film_samples) {
-    const uint pixel = path->pixel[slot];
+inline bool accumulate_path(PathState* path, const RenderParams* params, uint slot, __global float4* film_sum,
+                            __global float4* film_compensation, __global float4* film_sum_squares,
+                            __global float4* film_squares_compensation, __global uint* film_samples) {
+    const uint pixel = current_sample(path, params, slot).pixel;
     const float3 radiance = path->radiance[slot].xyz;
     const bool nonfinite = !is_finite3(radiance);
     const float4 x = nonfinite ? (float4)(0.0f) : (float4)(radiance, 0.0f);
@@ -36,14 +36,14 @@ __kernel void accumulate(WF_STAGE_PARAMS, __global float4* film_sum, __global fl
                          __global float4* film_sum_squares, __global float4* film_squares_compensation,
                          __global uint* film_samples) {
     WF_BIND_PATH_STATE(path);
-    __local uint scratch[2];
+    __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_FINISHED, &slot);
-    const bool nonfinite = active && accumulate_path(&path, slot, film_sum, film_compensation, film_sum_squares,
+    const bool nonfinite = active && accumulate_path(&path, &params, slot, film_sum, film_compensation, film_sum_squares,
                                                      film_squares_compensation, film_samples);
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
-    const uint bucket = path_length_bucket(active ? path.depth[slot] : 0u);
+    const uint bucket = path_length_bucket(active ? path_depth(&path, slot) : 0u);
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS, bucket, active, histogram);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_REGENERATE, slot, active, scratch);
 }

@@ -17,8 +17,8 @@ inline bool trace_shadow_ray(PathState* path, const RenderParams* params, uint s
                                       path->shadow_segment[slot].xyz, 1.0f, textures);
     if (!occluded) {
         path->radiance[slot].xyz += light.xyz;
-        add_to_bounce_layer(params, layers, layer_compensation, path->pixel[slot], flags & ~WF_SHADOW_THEN_CONTINUE,
-                            light.xyz);
+        add_to_bounce_layer(params, layers, layer_compensation, current_sample(path, params, slot).pixel,
+                            flags & ~WF_SHADOW_THEN_CONTINUE, light.xyz);
     }
     return (flags & WF_SHADOW_THEN_CONTINUE) != 0u;
 }
@@ -28,7 +28,7 @@ __kernel void intersect_shadow(WF_STAGE_PARAMS, __global const BvhNode* nodes,
                                __global float4* layers, __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
     WF_BIND_SCENE_TEXTURES(textures);
-    __local uint scratch[2];
+    __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_SHADOW, &slot);
     const bool continues =

@@ -8,14 +8,15 @@
 #include "common/queue_push.h"
 
 inline bool survives_roulette(PathState* path, const RenderParams* params, uint slot) {
-    const uint depth = path->depth[slot];
+    const uint depth = path_depth(path, slot);
     if (depth < params->roulette_depth) return true;
     const float3 throughput = path->throughput[slot].xyz;
     const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
     /* The fourth number of the BSDF group of the bounce that chose this ray;
      * bsdf_sample uses the first three, so the choice to go on is independent
      * of the direction (and of the throughput that direction gave). */
-    const float u = sample_values(params, path->pixel[slot], path->sample[slot], depth - 1u, WF_RNG_BSDF).w;
+    const PathSample current = current_sample(path, params, slot);
+    const float u = sample_values(params, current.pixel, current.sample, depth - 1u, WF_RNG_BSDF).w;
     if (!(u < q)) return false;
     path->throughput[slot].xyz = throughput / q;
     return true;
@@ -23,7 +24,7 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
 
 __kernel void roulette(WF_STAGE_PARAMS) {
     WF_BIND_PATH_STATE(path);
-    __local uint scratch[2];
+    __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_CONTINUE, &slot);
     const bool survives = active && survives_roulette(&path, &params, slot);

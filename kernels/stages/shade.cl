@@ -96,8 +96,9 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     const float4 ray = path->ray_direction[slot];
     const float3 direction = ray.xyz;
     const float pdf_previous = ray.w; /* 0 for camera rays and delta bounces: nothing to weigh against */
-    const uint depth = path->depth[slot];
-    const uint pixel = path->pixel[slot];
+    const uint depth = path_depth(path, slot);
+    const PathSample current = current_sample(path, params, slot);
+    const uint pixel = current.pixel;
     const float3 throughput = path->throughput[slot].xyz;
 
     if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
@@ -113,7 +114,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
         return WF_SHADE_FINISHED;
     }
 
-    const uint sample = path->sample[slot];
+    const uint sample = current.sample;
     const __global Triangle* t = &triangles[triangle];
     const __global Material* m = &materials[t->material];
     SurfacePoint point;
@@ -178,10 +179,9 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
         const float3 weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
         if (any(weight > 0.0f) && is_finite3(weight)) {
-            path->throughput[slot].xyz = throughput * weight;
+            path->throughput[slot] = (float4)(throughput * weight, as_float(depth + 1u));
             path->ray_origin[slot] = (float4)(offset_ray_origin(s.position, s.position_error, geometric_normal, wi), 0.0f);
             path->ray_direction[slot] = (float4)(wi, bs.delta ? 0.0f : bs.pdf);
-            path->depth[slot] = depth + 1u;
             outcome |= WF_SHADE_CONTINUES;
         }
     }
@@ -200,7 +200,7 @@ __kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
                     WF_SCENE_TEXTURE_PARAMS, __global float4* layers, __global float4* layer_compensation) {
     WF_BIND_PATH_STATE(path);
     WF_BIND_SCENE_TEXTURES(textures);
-    __local uint scratch[2];
+    __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
     const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
