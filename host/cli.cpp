@@ -131,6 +131,7 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
     ap.arg("--integrator I").help("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image (default: wavefront)");
     ap.arg("--schedule S").help("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X) (default: refill)");
+    ap.arg("--sort-materials").store_true().help("Sort the paths by the material they hit before shading (wavefront only)");
     ap.arg("--queue-push P").help("How kernels append to queues: group (one atomic per work-group), atomic (one per item) or scan (prefix sum) (default: group)");
     ap.arg("--local-size N").help("Work-items per work-group, 16 to 1024 (default: 64)");
     ap.arg("--stats-json FILE").help("Write the render's statistics (stage times, rays, counters per iteration) as JSON");
@@ -196,6 +197,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (!text("queue-push").empty())
         o.settings.queue_push =
             static_cast<QueuePush>(parse_choice("--queue-push", text("queue-push"), {"group", "atomic", "scan"}));
+    o.settings.sort_materials = ap["sort-materials"].get<int>();
+    if (o.settings.sort_materials && o.settings.integrator == Integrator::Megakernel)
+        throw InputError("--sort-materials sorts the wavefront's queue; the megakernel has none");
     o.stats_json = text("stats-json");
     o.settings.specialize = !ap["no-specialize"].get<int>();
     o.cache_dir = text("cache-dir");

@@ -9,8 +9,9 @@
 namespace wf {
 namespace {
 
-constexpr const char* kStageNames[STAGE_COUNT] = {"generate", "intersect",  "shade",     "intersect_shadow",
-                                                  "roulette", "accumulate", "megakernel"};
+constexpr const char* kStageNames[STAGE_COUNT] = {"generate",   "intersect",        "shade",     "intersect_shadow",
+                                                  "roulette",   "accumulate",       "sort_by_material",
+                                                  "megakernel"};
 constexpr uint32_t kDefaultPoolSize = 1u << 18;
 
 double event_seconds(const cl::Event& e) {

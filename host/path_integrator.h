@@ -56,6 +56,7 @@ struct RenderSettings {
     Integrator integrator = Integrator::Wavefront;
     Schedule schedule = Schedule::Refill; // for the wavefront integrator
     QueuePush queue_push = QueuePush::Group;
+    bool sort_materials = false; // reorder the extension queue by material before shade
 };
 
 const char* integrator_name(Integrator integrator);
@@ -69,6 +70,7 @@ enum Stage {
     STAGE_INTERSECT_SHADOW,
     STAGE_ROULETTE,
     STAGE_ACCUMULATE,
+    STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.cl)
     STAGE_MEGAKERNEL,
     STAGE_COUNT
 };

@@ -10,7 +10,28 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
                                        const DeviceScene& scene, const Camera& camera,
                                        const RenderSettings& settings)
     : PathIntegrator(device, scene, camera, settings) {
-    for (int s = 0; s < STAGE_MEGAKERNEL; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
+    for (int s = 0; s < kStageKernels; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
+    if (settings.sort_materials) {
+        count_materials_ = cl::Kernel(program, "count_materials");
+        scan_materials_ = cl::Kernel(program, "scan_materials");
+        scatter_materials_ = cl::Kernel(program, "scatter_materials");
+        key_counts_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * kSortKeys);
+        sorted_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * size_t{pool_.size()});
+        device.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+    }
+}
+
+void WavefrontScheduler::extend(uint32_t items) {
+    launch(STAGE_INTERSECT, items);
+    if (settings_.sort_materials) {
+        PathIntegrator::launch(STAGE_SORT, count_materials_, items);
+        PathIntegrator::launch(STAGE_SORT, scan_materials_, 1);
+        PathIntegrator::launch(STAGE_SORT, scatter_materials_, items);
+        // The extension queue is the first region of the queue buffer.
+        device_.queue.enqueueCopyBuffer(sorted_, pool_.queues, 0, 0, sizeof(cl_uint) * size_t{items});
+        device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+    }
+    launch(STAGE_SHADE, items);
 }
 
 // Every kernel's arguments: the shared ones (WF_STAGE_PARAMS), then its own.
@@ -37,6 +58,13 @@ void WavefrontScheduler::set_stage_args() {
                                      scene_.textures),
                     film_.layers, film_.layer_compensation);
     shared_then(STAGE_ROULETTE);
+    if (settings_.sort_materials) {
+        set_kernel_args(count_materials_, pool_.set_stage_args(count_materials_, params_), scene_.triangles,
+                        key_counts_);
+        set_kernel_args(scan_materials_, 0, key_counts_);
+        set_kernel_args(scatter_materials_, pool_.set_stage_args(scatter_materials_, params_), scene_.triangles,
+                        key_counts_, sorted_);
+    }
     set_kernel_args(shared_then(STAGE_ACCUMULATE), own, film_.sum, film_.compensation, film_.sum_squares,
                     film_.squares_compensation, film_.samples);
 }
@@ -67,9 +95,7 @@ void WavefrontScheduler::run_iterations(bool passes) {
     while (extending + regenerating > 0) {
         const bool generating = regenerating > 0 && !(passes && extending > 0);
         if (generating) launch(STAGE_GENERATE, regenerating);
-        const uint32_t active = std::min(pool, extending + (generating ? regenerating : 0u));
-        launch(STAGE_INTERSECT, active);
-        launch(STAGE_SHADE, active);
+        extend(std::min(pool, extending + (generating ? regenerating : 0u)));
         // Shade consumed EXTEND and generate REGENERATE; passes keep the
         // slots freed so far in REGENERATE until the pass ends.
         queue.enqueueFillBuffer(pool_.counters, 0u, 0, (generating ? 2 : 1) * sizeof(cl_uint));
@@ -103,10 +129,7 @@ void WavefrontScheduler::run_fullest_first() {
         if (items == 0) break;
         switch (fullest) {
         case WF_QUEUE_REGENERATE: launch(STAGE_GENERATE, items); break;
-        case WF_QUEUE_EXTEND:
-            launch(STAGE_INTERSECT, items);
-            launch(STAGE_SHADE, items);
-            break;
+        case WF_QUEUE_EXTEND: extend(items); break;
         case WF_QUEUE_SHADOW: launch(STAGE_INTERSECT_SHADOW, items); break;
         case WF_QUEUE_CONTINUE: launch(STAGE_ROULETTE, items); break;
         default: launch(STAGE_ACCUMULATE, items); break;

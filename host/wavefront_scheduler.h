@@ -15,6 +15,8 @@
 //             depth and the pool drains at the end of every pass;
 //   fullest — Cycles X's way: read the queue counters after every launch and
 //             launch the stage whose queue is longest.
+// --sort-materials adds a counting sort of the extension queue by material
+// between intersect and shade (kernels/stages/sort_by_material.cl).
 #pragma once
 
 #include <array>
@@ -35,8 +37,16 @@ private:
     void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
     void run_iterations(bool passes);
     void run_fullest_first();
+    // Intersect and shade over `items` paths of the extension queue, sorted
+    // by material between them when the settings ask.
+    void extend(uint32_t items);
 
-    std::array<cl::Kernel, STAGE_MEGAKERNEL> kernels_; // one per wavefront stage
+    static constexpr int kStageKernels = STAGE_ACCUMULATE + 1;
+    static constexpr size_t kSortKeys = 256; // WF_SORT_KEYS
+    std::array<cl::Kernel, kStageKernels> kernels_; // one per wavefront stage, by name
+    // --sort-materials only: its kernels, the key counts and the sorted queue.
+    cl::Kernel count_materials_, scan_materials_, scatter_materials_;
+    cl::Buffer key_counts_, sorted_;
 };
 
 } // namespace wf

@@ -6,6 +6,7 @@
  * (include/wavefront/path_state.h); host/wavefront_scheduler.cpp launches them. */
 #include "stages/generate.cl"
 #include "stages/intersect.cl"
+#include "stages/sort_by_material.cl"
 #include "stages/shade.cl"
 #include "stages/intersect_shadow.cl"
 #include "stages/roulette.cl"
