@@ -152,6 +152,10 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--report-every SECONDS").help("A checkpoint every this many seconds (default: at each doubling of spp)");
     ap.arg("--time SECONDS").help("Stop after this many seconds (then --spp, if given, is a cap)");
     ap.arg("--target-error X").help("Stop once the estimated relMSE is below X (from 16 spp on)");
+    ap.separator("Long renders:");
+    ap.arg("--checkpoint-every SECONDS").help("Write the render so far to OUT.partial.exr this often, atomically (default: never; Ctrl-C writes it too)");
+    ap.arg("--resume PARTIAL").help("Go on from a partial render (same scene, settings and seed; checked)");
+    ap.arg("--quiet").store_true().help("No progress line on stderr");
 
     // ArgParse expects argv[0]; ours is "render".
     if (ap.parse_args(argc - 1, argv + 1) < 0) throw InputError("render: " + ap.geterror());
@@ -201,6 +205,10 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (o.settings.sort_materials && o.settings.integrator == Integrator::Megakernel)
         throw InputError("--sort-materials sorts the wavefront's queue; the megakernel has none");
     o.stats_json = text("stats-json");
+    if (!text("checkpoint-every").empty())
+        o.checkpoint_every = parse_positive("--checkpoint-every", text("checkpoint-every"));
+    o.resume = text("resume");
+    o.quiet = ap["quiet"].get<int>();
     o.settings.specialize = !ap["no-specialize"].get<int>();
     o.cache_dir = text("cache-dir");
     o.environment = text("env");

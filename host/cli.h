@@ -29,6 +29,9 @@ struct RenderOptions {
     std::string reference;    // an image to report the error against
     std::string report_csv;   // where to write the checkpoints as CSV
     std::string stats_json;   // where to write the render's statistics (render_stats_json.h)
+    double checkpoint_every = 0.0; // seconds between partial renders written to OUT.partial.exr; 0: none
+    std::string resume;            // a partial render to go on from
+    bool quiet = false;            // no progress line
 };
 
 // `wavefront cache warm|clear`.

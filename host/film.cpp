@@ -41,16 +41,36 @@ Film::Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t w
     layer_compensation = zeroed(context, queue, layer_elements * sizeof(cl_float4));
 }
 
-FilmReadout Film::read(const cl::CommandQueue& queue) const {
+FilmState Film::state(const cl::CommandQueue& queue) const {
     const size_t pixels = size_t{width} * height;
-    const std::vector<cl_float4> s = read_float4(queue, sum, pixels), c = read_float4(queue, compensation, pixels);
-    const std::vector<cl_float4> s2 = read_float4(queue, sum_squares, pixels),
-                                 c2 = read_float4(queue, squares_compensation, pixels);
-    std::vector<cl_uint> n(pixels);
-    queue.enqueueReadBuffer(samples, CL_TRUE, 0, pixels * sizeof(cl_uint), n.data());
+    FilmState st;
+    st.width = width;
+    st.height = height;
+    st.sum = read_float4(queue, sum, pixels);
+    st.compensation = read_float4(queue, compensation, pixels);
+    st.sum_squares = read_float4(queue, sum_squares, pixels);
+    st.squares_compensation = read_float4(queue, squares_compensation, pixels);
+    st.samples.resize(pixels);
+    queue.enqueueReadBuffer(samples, CL_TRUE, 0, pixels * sizeof(cl_uint), st.samples.data());
+    return st;
+}
 
+void Film::restore(const cl::CommandQueue& queue, const FilmState& st) const {
+    const size_t pixels = size_t{width} * height;
+    queue.enqueueWriteBuffer(sum, CL_TRUE, 0, pixels * sizeof(cl_float4), st.sum.data());
+    queue.enqueueWriteBuffer(compensation, CL_TRUE, 0, pixels * sizeof(cl_float4), st.compensation.data());
+    queue.enqueueWriteBuffer(sum_squares, CL_TRUE, 0, pixels * sizeof(cl_float4), st.sum_squares.data());
+    queue.enqueueWriteBuffer(squares_compensation, CL_TRUE, 0, pixels * sizeof(cl_float4),
+                             st.squares_compensation.data());
+    queue.enqueueWriteBuffer(samples, CL_TRUE, 0, pixels * sizeof(cl_uint), st.samples.data());
+}
+
+FilmReadout resolve(const FilmState& st) {
+    const size_t pixels = size_t{st.width} * st.height;
+    const std::vector<cl_float4>&s = st.sum, &c = st.compensation, &s2 = st.sum_squares, &c2 = st.squares_compensation;
+    const std::vector<cl_uint>& n = st.samples;
     FilmReadout out;
-    out.mean = Image{width, height, std::vector<float>(3 * pixels, 0.0f)};
+    out.mean = Image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
     out.variance_of_mean = out.mean;
     out.min_samples = pixels ? *std::min_element(n.begin(), n.end()) : 0;
     for (size_t p = 0; p < pixels; ++p) {
@@ -65,6 +85,14 @@ FilmReadout Film::read(const cl::CommandQueue& queue) const {
             out.variance_of_mean.rgb[3 * p + k] = static_cast<float>(sample_variance / count);
         }
     }
+    return out;
+}
+
+FilmReadout Film::read(const cl::CommandQueue& queue) const {
+    const size_t pixels = size_t{width} * height;
+    const FilmState st = state(queue);
+    const std::vector<cl_uint>& n = st.samples;
+    FilmReadout out = resolve(st);
     if (bounce_layers) {
         const std::vector<cl_float4> ls = read_float4(queue, layers, pixels * bounce_layers),
                                      lc = read_float4(queue, layer_compensation, pixels * bounce_layers);

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <memory>
+
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -21,7 +24,7 @@ float srgb_encode(float linear) {
 namespace {
 // Formats that keep radiance as floats; everything else is display-referred 8-bit.
 bool stores_linear_float(const std::string& format) {
-    return format == "openexr" || format == "hdr" || format == "pfm" || format == "tiff";
+    return format == "openexr" || format == "hdr" || format == "tiff";
 }
 } // namespace
 
@@ -62,6 +65,8 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
     spec.attribute("wavefront:device", metadata.device);
     spec.attribute("wavefront:seed", static_cast<int>(metadata.seed));
     spec.attribute("wavefront:scene", metadata.scene);
+    spec.attribute("wavefront:interrupted", metadata.interrupted ? 1 : 0);
+    for (const auto& [name, value] : metadata.options) spec.attribute("wavefront:option:" + name, value);
 
     // Interleaved: RGB, then each layer's RGB, pixel by pixel.
     const size_t count = size_t{image.width} * image.height;
@@ -73,10 +78,38 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
         }
     if (!float_format)
         for (float& v : pixels) v = srgb_encode(v);
-    if (!out->open(path, spec)) throw InputError(path + ": cannot write (" + out->geterror() + ")");
+    // Beside the target, with its extension (OIIO picks the format by it), then renamed over it.
+    const std::filesystem::path target(path);
+    const std::filesystem::path temporary =
+        target.parent_path() / ("." + target.stem().string() + ".writing-" + std::to_string(::getpid()) +
+                                target.extension().string());
+    if (!out->open(temporary.string(), spec)) throw InputError(path + ": cannot write (" + out->geterror() + ")");
     const bool written = out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
     const bool closed = out->close();
-    if (!written || !closed) throw InputError(path + ": write failed (" + out->geterror() + ")");
+    std::error_code error;
+    if (written && closed) std::filesystem::rename(temporary, target, error);
+    if (!written || !closed || error) {
+        std::filesystem::remove(temporary, error);
+        throw InputError(path + ": write failed (" + (written && closed ? "cannot rename the written file" : out->geterror()) + ")");
+    }
+}
+
+ChannelImage read_channels(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    ChannelImage image;
+    image.width = static_cast<uint32_t>(spec.width);
+    image.height = static_cast<uint32_t>(spec.height);
+    image.channel_names = spec.channelnames;
+    image.pixels.resize(size_t{image.width} * image.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        throw InputError(path + ": cannot read (" + in->geterror() + ")");
+    const std::string prefix = "wavefront:option:";
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+        if (p.name().string().rfind(prefix, 0) == 0)
+            image.options.emplace_back(p.name().string().substr(prefix.size()), p.get_string());
+    return image;
 }
 
 } // namespace wf

@@ -1,6 +1,7 @@
 // main.cpp — `wavefront`: the command dispatch and the exit-code policy.
 //   0 success · 1 the machine failed (no OpenCL device, a kernel that will not
-//   build) · 2 the input is at fault (a scene, a flag, an output path).
+//   build) · 2 the input is at fault (a scene, a flag, an output path) ·
+//   128 + signal: a render stopped by Ctrl-C or SIGTERM, its image written.
 // Every failure is one line on stderr that names the thing at fault.
 #include <iostream>
 
@@ -27,9 +28,11 @@ int main(int argc, const char** argv) {
         case wf::Command::CacheClear:
             wf::clear_cache(cl.cache, std::cout);
             return 0;
-        case wf::Command::Render:
-            wf::print_report(std::cout, wf::run_render(cl.render, std::cout, std::cerr));
-            return 0;
+        case wf::Command::Render: {
+            const wf::RenderSummary summary = wf::run_render(cl.render, std::cout, std::cerr);
+            wf::print_report(std::cout, summary);
+            return summary.interrupted_by ? 128 + summary.interrupted_by : 0; // as a shell reports a signal
+        }
         }
     } catch (const wf::InputError& e) {
         std::cerr << "error: " << e.what() << "\n";

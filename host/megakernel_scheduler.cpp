@@ -25,7 +25,7 @@ void MegakernelScheduler::render_to(uint32_t spp) {
     device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
     // Rounds always run to their end, so every pixel now has the same count.
     const uint64_t wanted = uint64_t{params_.pixel_count} * spp;
-    while (stats_.samples < wanted) {
+    while (stats_.samples < wanted && !stopping()) {
         launch(STAGE_MEGAKERNEL, kernel_, pool_.size());
         const uint64_t before = stats_.samples;
         read_counters(WF_QUEUE_COUNT);

@@ -131,6 +131,7 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
         ++stats_.stages[stage].launches;
     }
     pending_.clear();
+    if (on_progress_) on_progress_(stats_);
     return counters;
 }
 

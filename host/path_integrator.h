@@ -14,7 +14,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,9 @@ struct RenderSettings {
     Schedule schedule = Schedule::Refill; // for the wavefront integrator
     QueuePush queue_push = QueuePush::Group;
     bool sort_materials = false; // reorder the extension queue by material before shade
+    // While it holds non-zero, no sample starts: the paths in flight end and
+    // the round returns early, each slot's pixels then one sample apart at most.
+    const std::atomic<int>* stop = nullptr;
 };
 
 const char* integrator_name(Integrator integrator);
@@ -123,11 +128,17 @@ class PathIntegrator {
 public:
     virtual ~PathIntegrator() = default;
 
-    // Continues every pixel up to `spp` samples (a round).
+    // Continues every pixel up to `spp` samples (a round), unless settings.stop
+    // ends it early.
     virtual void render_to(uint32_t spp) = 0;
 
     const RenderStats& stats() const { return stats_; }
     const Film& film() const { return film_; }
+    Film& film() { return film_; }
+    PathPool& pool() { return pool_; }
+
+    // Called after every read of the counters (a progress display).
+    void on_progress(std::function<void(const RenderStats&)> f) { on_progress_ = std::move(f); }
 
 protected:
     PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
@@ -142,6 +153,7 @@ protected:
     std::array<cl_uint, WF_COUNTER_COUNT> read_counters(uint32_t clear_from);
     // Every slot to the regeneration queue, the other counters to zero: the start of a round.
     void queue_every_slot();
+    bool stopping() const { return settings_.stop && settings_.stop->load() != 0; }
 
     const OpenClDevice& device_;
     RenderSettings settings_;
@@ -154,6 +166,7 @@ protected:
 
 private:
     std::vector<std::pair<Stage, cl::Event>> pending_; // launched since the last read
+    std::function<void(const RenderStats&)> on_progress_;
 };
 
 } // namespace wf

@@ -2,6 +2,8 @@
 // allocated and bound here without further edits.
 #include "path_pool.h"
 
+#include <cstring>
+
 
 namespace wf {
 namespace {
@@ -33,6 +35,12 @@ size_t PathPool::bytes_per_path() { return state_bytes_per_path() + sizeof(cl_ui
 void PathPool::clear(const cl::CommandQueue& queue) const {
     for (size_t f = 0; f < fields_.size(); ++f)
         queue.enqueueFillBuffer(fields_[f], cl_uchar{0}, 0, field_bytes_[f] * size_);
+}
+
+void PathPool::restore_samples_started(const cl::CommandQueue& queue, const std::vector<uint32_t>& started) const {
+    std::vector<cl_float4> radiance(size_);
+    for (uint32_t slot = 0; slot < size_; ++slot) std::memcpy(&radiance[slot].s[3], &started[slot], sizeof(uint32_t));
+    queue.enqueueWriteBuffer(field(PathField::radiance), CL_TRUE, 0, sizeof(cl_float4) * size_, radiance.data());
 }
 
 cl_uint PathPool::set_stage_args(cl::Kernel& kernel, const RenderParams& params) const {

@@ -36,14 +36,16 @@ FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& opti
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     FilmReadout film;
-    uint32_t done = 0;
+    uint32_t done = options.start_spp;
     for (;;) {
-        const double seconds_per_spp = done ? renderer.stats().seconds / done : 0.0;
+        const uint32_t rendered = done - options.start_spp; // by this run, whose time stats() has
+        const double seconds_per_spp = rendered ? renderer.stats().seconds / rendered : 0.0;
         const uint32_t next = next_round(options, done, seconds_per_spp, elapsed());
         if (next <= done) break;
         renderer.render_to(next);
-        done = next;
         film = renderer.read();
+        const bool stopped = options.stop && options.stop->load() != 0;
+        done = stopped ? film.min_samples : next;
 
         Checkpoint c;
         c.seconds = elapsed();
@@ -55,7 +57,7 @@ FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& opti
         const bool time_is_up = options.time_budget > 0.0 && c.seconds >= options.time_budget;
         const bool accurate = options.target_relmse > 0.0 && done >= kMinSppForTargetError &&
                               *c.relmse_estimate < options.target_relmse;
-        if (time_is_up || accurate) break;
+        if (time_is_up || accurate || stopped) break;
     }
     return film;
 }

@@ -2,9 +2,10 @@
 // how long it has run, how many samples per pixel it has, and how wrong the
 // image still is (against a reference if given, and always estimated from the
 // render's own variance). It stops at the sample count, the time budget or
-// the target error, whichever comes first.
+// the target error, whichever comes first, or when `stop` is set.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <optional>
 
@@ -19,6 +20,9 @@ struct ProgressOptions {
     double target_relmse = 0.0; // stop once the estimated relMSE falls below it (from 16 spp on); 0: none
     double report_every = 0.0;  // seconds between checkpoints; 0: at each doubling of spp
     const Image* reference = nullptr;
+    uint32_t start_spp = 0; // the samples every pixel already has (a resumed render)
+    // Set by Ctrl-C (RenderSettings::stop): the round in flight ends early and is the last.
+    const std::atomic<int>* stop = nullptr;
 };
 
 struct Checkpoint {

@@ -16,6 +16,9 @@
 #include "errors.h"
 #include "gltf_loader.h"
 #include "image_io.h"
+#include "interrupt.h"
+#include "partial_render.h"
+#include "progress_line.h"
 #include "program_cache.h"
 #include "progressive_render.h"
 #include "render_stats_json.h"
@@ -61,6 +64,28 @@ private:
     std::ostream& table_;
     std::ofstream csv_;
 };
+
+// What shapes the image, for every output's metadata and for --resume to
+// check: a partial render continues only under the same values.
+ImageOptions image_options(const RenderOptions& o, ImageSize size, uint32_t pool_size) {
+    auto choice = [](uint32_t i, std::initializer_list<const char*> names) { return *(names.begin() + i); };
+    const RenderSettings& s = o.settings;
+    return {{"scene", o.scene},
+            {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
+            {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
+            {"seed", std::to_string(s.seed)},
+            {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
+            {"light-sampling", choice(s.light_sampling, {"bsdf", "nee", "mis"})},
+            {"hemisphere", choice(s.hemisphere, {"uniform", "cosine"})},
+            {"sampler", choice(s.sampler, {"independent", "sobol"})},
+            {"env", o.environment.empty() ? "none" : o.environment},
+            {"env-rotate", std::to_string(o.environment_rotate)},
+            {"env-scale", std::to_string(o.environment_scale)},
+            {"env-uniform", std::to_string(o.environment_uniform)},
+            {"aov", s.bounce_layers ? "bounces" : "none"},
+            {"pool-size", std::to_string(pool_size)},
+            {"version", WF_VERSION}};
+}
 
 std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
     std::vector<ImageLayer> layers;
@@ -111,8 +136,13 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
     std::string pool_note;
-    choose_pool_size(options.settings.pool_size, size.width * size.height, &pool_note);
+    const uint32_t pool_size = choose_pool_size(options.settings.pool_size, size.width * size.height, &pool_note);
     if (!pool_note.empty()) log << "note: " << pool_note << "\n";
+    const ImageOptions shaping = image_options(options, size, pool_size);
+    if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
+        throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
+    std::optional<PartialRender> resumed;
+    if (!options.resume.empty()) resumed = read_partial_render(options.resume, shaping);
     if (options.settings.bounce_layers && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
     std::optional<Image> reference;
@@ -127,25 +157,65 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const OpenClDevice device = open_device(options.device);
     RenderSettings settings = options.settings;
     settings.cache_dir = cache_directory(options.cache_dir);
+    settings.stop = &install_interrupt_handlers();
     // Compiling takes seconds on a cold cache: say so on a terminal, then erase the line.
     const bool terminal = ::isatty(STDERR_FILENO);
-    if (terminal) log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
+    if (terminal && !options.quiet)
+        log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
     Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
-    if (terminal) log << "\r\33[K" << std::flush;
+    if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
-    CheckpointLog checkpoints(out, options.report_csv);
-    const FilmReadout film =
-        render_progressively(renderer, progress, [&](const Checkpoint& c) { checkpoints.add(c); });
+    progress.stop = settings.stop;
+    if (resumed) progress.start_spp = renderer.resume(resumed->film);
+    if (options.checkpoint_every > 0.0 && progress.report_every == 0.0) progress.report_every = options.checkpoint_every;
 
-    RenderSummary summary = renderer.summary();
     ImageMetadata metadata;
-    metadata.samples_per_pixel = film.min_samples;
-    metadata.render_seconds = summary.stats.seconds;
     metadata.device = device.info.name;
     metadata.seed = options.settings.seed;
     metadata.scene = options.scene;
+    metadata.options = shaping;
+    const uint64_t pixels = uint64_t{size.width} * size.height;
+    ProgressLine progress_line(log, terminal, 10.0,
+                               progress.max_spp ? pixels * (progress.max_spp - progress.start_spp) : 0,
+                               progress.time_budget);
+    if (!options.quiet) renderer.on_progress([&](const RenderStats& s) { progress_line.update(s); });
+    const std::string partial_path = partial_render_path(options.output);
+    bool partial_written = false;
+    auto write_partial = [&] {
+        metadata.samples_per_pixel = renderer.read().min_samples;
+        metadata.render_seconds = renderer.stats().seconds;
+        write_partial_render(partial_path, renderer.film_state(), metadata);
+        partial_written = true;
+    };
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    CheckpointLog checkpoints(out, options.report_csv);
+    const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
+        checkpoints.add(c);
+        if (c.relmse_estimate) progress_line.set_error(*c.relmse_estimate);
+        const auto now = std::chrono::steady_clock::now();
+        if (options.checkpoint_every > 0.0 &&
+            std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_every) {
+            write_partial();
+            last_checkpoint = now;
+        }
+    });
+    progress_line.finish();
+
+    RenderSummary summary = renderer.summary();
+    summary.interrupted_by = interrupt_signal();
+    metadata.samples_per_pixel = film.min_samples;
+    metadata.render_seconds = summary.stats.seconds;
+    metadata.interrupted = summary.interrupted_by != 0;
     write_image(options.output, film.mean, metadata, bounce_layers(film));
+    if (summary.interrupted_by) {
+        write_partial();
+        log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and " << partial_path
+            << "; go on with --resume " << partial_path << "\n";
+    } else if (partial_written) {
+        std::error_code ignored; // stale now that the image is whole
+        std::filesystem::remove(partial_path, ignored);
+    }
 
     summary.scene = options.scene;
     summary.output = options.output;

@@ -35,6 +35,7 @@ struct RenderSummary {
     RenderTimes times;
     RenderStats stats;
     std::string output;
+    int interrupted_by = 0; // the signal that stopped the render early, or 0
 };
 
 void print_report(std::ostream& out, const RenderSummary& s);

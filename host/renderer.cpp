@@ -96,6 +96,31 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     summary_.device_bytes = device_scene_.bytes + scheduler_->stats().pool_bytes + scheduler_->film().bytes();
 }
 
+uint32_t Renderer::resume(const FilmState& state) {
+    Film& film = scheduler_->film();
+    if (state.width != film.width || state.height != film.height)
+        throw InputError("the partial render is " + std::to_string(state.width) + "x" + std::to_string(state.height) +
+                         ", not " + std::to_string(film.width) + "x" + std::to_string(film.height));
+    // Slot i takes its pixels i, i + pool, ... in turn, so a stopped render
+    // leaves each slot's first pixels one sample ahead of the rest, never a
+    // pixel behind one that comes after it; the count of samples it started
+    // is their sum.
+    const uint32_t pool = scheduler_->pool().size();
+    std::vector<uint32_t> started(pool, 0u);
+    for (size_t p = 0; p < state.samples.size(); ++p) {
+        const uint32_t slot = static_cast<uint32_t>(p % pool);
+        const uint32_t n = state.samples[p], first = state.samples[slot];
+        const uint32_t previous = p >= pool ? state.samples[p - pool] : n;
+        if (n > previous || n + 1 < first)
+            throw InputError("the partial render's sample counts were not left by a pool of " + std::to_string(pool) +
+                             " paths (pixel " + std::to_string(p) + ")");
+        started[slot] += n;
+    }
+    film.restore(device_.queue, state);
+    scheduler_->pool().restore_samples_started(device_.queue, started);
+    return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
+}
+
 RenderSummary Renderer::summary() const {
     RenderSummary s = summary_;
     s.stats = stats();

@@ -29,9 +29,15 @@ public:
     Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
              const RenderSettings& settings);
 
-    // Continues every pixel up to `spp` samples.
+    // Continues every pixel up to `spp` samples, unless settings.stop ends the round early.
     void render_to(uint32_t spp) { scheduler_->render_to(spp); }
+    // Goes on from a stopped render's film (host/partial_render.h), which must
+    // have this image's size and the sample counts this pool size leaves;
+    // returns the fewest samples a pixel has. Throws InputError otherwise.
+    uint32_t resume(const FilmState& state);
+    void on_progress(std::function<void(const RenderStats&)> f) { scheduler_->on_progress(std::move(f)); }
     FilmReadout read() const { return scheduler_->film().read(device_.queue); }
+    FilmState film_state() const { return scheduler_->film().state(device_.queue); }
     const RenderStats& stats() const { return scheduler_->stats(); }
 
     // What the closing report says of this render so far.

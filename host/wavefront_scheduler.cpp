@@ -92,8 +92,10 @@ void WavefrontScheduler::run_iterations(bool passes) {
     const cl::CommandQueue& queue = device_.queue;
     const uint32_t pool = pool_.size();
     uint32_t extending = 0, regenerating = pool;
-    while (extending + regenerating > 0) {
-        const bool generating = regenerating > 0 && !(passes && extending > 0);
+    for (;;) {
+        const bool stop = stopping(); // read once: it may change at any time
+        if (extending + (stop ? 0u : regenerating) == 0) break;
+        const bool generating = regenerating > 0 && !(passes && extending > 0) && !stop;
         if (generating) launch(STAGE_GENERATE, regenerating);
         extend(std::min(pool, extending + (generating ? regenerating : 0u)));
         // Shade consumed EXTEND and generate REGENERATE; passes keep the
@@ -123,6 +125,7 @@ void WavefrontScheduler::run_fullest_first() {
     counters[WF_QUEUE_REGENERATE] = pool_.size();
     for (;;) {
         int fullest = kLaterFirst[0];
+        if (stopping()) counters[WF_QUEUE_REGENERATE] = 0; // start nothing more
         for (int q : kLaterFirst)
             if (counters[q] > counters[fullest]) fullest = q;
         const uint32_t items = counters[fullest];
