@@ -111,6 +111,26 @@ std::vector<unsigned char> read_file(const std::string& path) {
     return bytes;
 }
 
+// External buffers and images must lie in the scene's folder or below it: a
+// file from anywhere must not make the renderer read files elsewhere
+// ("../../etc/passwd" as a buffer URI).
+struct SceneFolder {
+    std::filesystem::path root;
+    std::string refused; // the first file refused, for the message (tinygltf's own is cut to length)
+};
+
+bool read_inside_folder(std::vector<unsigned char>* out, std::string* error, const std::string& file, void* user) {
+    SceneFolder& folder = *static_cast<SceneFolder*>(user);
+    std::error_code ec;
+    const std::filesystem::path relative = std::filesystem::weakly_canonical(file, ec).lexically_relative(folder.root);
+    if (ec || relative.empty() || *relative.begin() == "..") {
+        if (folder.refused.empty()) folder.refused = file;
+        if (error) *error += "outside the scene's folder";
+        return false;
+    }
+    return tinygltf::ReadWholeFile(out, error, file, nullptr);
+}
+
 Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -121,6 +141,10 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
     // Images are kept encoded; gltf_textures.cpp decodes those materials use,
     // so a missing or broken image is reported with the material.
     parser.SetImageLoader(keep_image_encoded, nullptr);
+    std::error_code ec;
+    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), ec), {}};
+    parser.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_inside_folder,
+                           &tinygltf::WriteWholeFile, &folder});
     Model model;
     std::string error;
     std::string warning; // only about images, which gltf_textures.cpp reports itself
@@ -134,6 +158,8 @@ Model parse_model(const std::string& path, const std::vector<unsigned char>& byt
     } catch (const std::exception& e) { // tinygltf's own checks can throw (std::vector::at)
         error = e.what();
     }
+    if (!parsed && !folder.refused.empty())
+        fail(path, "refers to " + folder.refused + ", which lies outside the scene's folder");
     if (!parsed) {
         const std::string detail = one_line(error);
         fail(path, std::string(binary ? "cannot load GLB" : "cannot load glTF") +

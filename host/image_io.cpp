@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include <unistd.h>
@@ -27,6 +28,18 @@ bool stores_linear_float(const std::string& format) {
     return format == "openexr" || format == "hdr" || format == "tiff";
 }
 } // namespace
+
+void check_can_write(const std::string& path) {
+    if (!OIIO::ImageOutput::create(path))
+        throw InputError(path + ": no image format for this extension (" + OIIO::geterror() + ")");
+    const std::filesystem::path target(path);
+    const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throw InputError(path + ": no such folder " + folder.string());
+    const std::filesystem::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
+    if (!std::ofstream(probe)) throw InputError(path + ": cannot write in " + folder.string());
+    std::filesystem::remove(probe, ec);
+}
 
 bool holds_float_radiance(const std::string& path) {
     auto out = OIIO::ImageOutput::create(path);

@@ -37,6 +37,11 @@ struct ImageLayer {
 void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata,
                  const std::vector<ImageLayer>& layers = {});
 
+// Throws InputError naming `path` unless a file can be written there: its
+// folder exists and takes a new file, and the extension names a format. Checked
+// before a render starts, so no time is spent on an image that cannot be kept.
+void check_can_write(const std::string& path);
+
 // True when the extension's format keeps linear float radiance (and layers).
 bool holds_float_radiance(const std::string& path);
 

@@ -120,6 +120,7 @@ std::string cache_directory(const std::string& requested) {
 
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
+    check_can_write(options.output);
     Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
     if (!options.environment.empty()) {
         auto map = std::make_shared<EnvironmentMap>(

@@ -101,6 +101,42 @@ TEST_F(Cli, RendersPngAndExrWithMetadata) {
     EXPECT_EQ(spec.get_int_attribute("wavefront:seed"), 5);
     EXPECT_GT(spec.get_float_attribute("wavefront:renderTimeSeconds"), 0.0f);
     EXPECT_FALSE(spec.get_string_attribute("wavefront:device").empty());
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:seed"), "5");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:size"), "32x32");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:camera"), "first");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:version"), WF_VERSION);
+    EXPECT_EQ(spec.get_int_attribute("wavefront:interrupted", -1), 0);
+}
+
+// Files from anywhere, written to anywhere: odd names work, and every place
+// that cannot work is named in one line, exit 2, before any rendering and
+// with no output file left behind.
+TEST_F(Cli, HostilePathsAreNamedAndLeaveNoOutput) {
+    const fs::path odd = dir_ / "a folder with spaces and ünïcödé";
+    fs::create_directories(odd);
+    fs::copy_file(kCornell, odd / "cornell böx.gltf");
+    const test::ProcessResult r = run("render '" + (odd / "cornell böx.gltf").string() +
+                                      "' --width 16 --spp 1 -o '" + (odd / "ëxr out.exr").string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(odd / "ëxr out.exr"));
+
+    const std::string small = "render " + kCornell + " --width 16 --spp 1 ";
+    expect_rejected(small + "-o " + path("no/such/folder/x.png"), "no/such/folder");
+    write("plain.txt", "not a folder");
+    expect_rejected(small + "-o " + path("plain.txt/x.png"), "plain.txt");
+    expect_rejected(small + "-o " + path("x.unknownformat"), "x.unknownformat");
+    for (const char* name : {"x.png", "x.unknownformat"}) EXPECT_FALSE(fs::exists(path(name)));
+
+    // A buffer outside the scene's folder is not read, even where it exists.
+    fs::create_directories(dir_ / "scene");
+    write("outside.bin", std::string(36, '\0'));
+    write("scene/escape.gltf",
+          R"({"asset":{"version":"2.0"},"buffers":[{"uri":"../outside.bin","byteLength":36}],)"
+          R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+          R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}],)"
+          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
+    expect_rejected("render " + path("scene/escape.gltf") + " -o " + path("escape.png"), "outside the scene's folder");
+    EXPECT_FALSE(fs::exists(path("escape.png")));
 }
 
 TEST_F(Cli, ReportsErrorAgainstTimeAsCsv) {
