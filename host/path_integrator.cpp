@@ -68,6 +68,12 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string*
     return size;
 }
 
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes) {
+    const size_t room = device_memory > used_bytes ? (device_memory - used_bytes) / 2 : 0;
+    const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / (WF_QUEUE_COUNT * sizeof(cl_uint)));
+    return static_cast<uint32_t>(std::min<size_t>(pool, fits));
+}
+
 PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
                                const RenderSettings& settings)
     : device_(device), settings_(settings), scene_(scene), camera_(camera),

@@ -118,6 +118,11 @@ struct RenderStats {
 // it differs from the request.
 uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note);
 
+// `pool`, or fewer paths where they would take more than half the memory that
+// `used_bytes` (scene and image) leave, or a larger queue buffer than one
+// allocation may be; 0 when not even one path fits.
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes);
+
 // Sets consecutive arguments of `kernel` from index `first` on; returns the next index.
 template <class... Args> cl_uint set_kernel_args(cl::Kernel& kernel, cl_uint first, const Args&... args) {
     (kernel.setArg(first++, args), ...);

@@ -165,6 +165,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
     Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
+    if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;

@@ -60,9 +60,22 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     const DeviceSceneData data = make_device_scene_data(scene, bvh);
 
     const size_t pixels = size_t{size.width} * size.height;
+    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers);
+    if (requested.pool_size == 0) {
+        // The default pool, capped to half the memory the scene and the film
+        // leave, and to the largest buffer the device allocates: a small
+        // device renders with fewer paths in flight rather than failing.
+        const uint32_t fits = pool_that_fits(settings.pool_size, device.info.global_memory,
+                                             device.info.max_allocation, data.bytes() + film_bytes);
+        if (fits > 0 && fits < settings.pool_size) {
+            settings.pool_size = fits;
+            summary_.pool_note = "pool of " + std::to_string(fits) + " paths, what " + device.info.name +
+                                 "'s memory holds beside the scene and the image (" +
+                                 mib(device.info.global_memory) + ")";
+        }
+    }
     check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
-                        Film::bytes_for(size.width, size.height, settings.bounce_layers),
-                        std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
+                        film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
                                   pixels * sizeof(cl_float4),
                                   size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
 
