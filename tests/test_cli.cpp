@@ -47,6 +47,27 @@ protected:
 
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 
+// Every flag of `render --help` says its default; the commands and the version are listed.
+TEST_F(Cli, HelpDocumentsEveryFlagWithItsDefault) {
+    const test::ProcessResult top = run("--help");
+    EXPECT_EQ(top.exit_code, 0);
+    for (const char* command : {"render", "devices", "cache warm", "cache clear", "--version"})
+        EXPECT_NE(top.out.find(command), std::string::npos) << command;
+    const test::ProcessResult help = run("render --help");
+    EXPECT_EQ(help.exit_code, 0);
+    std::istringstream lines(help.out);
+    int flags = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("    --", 0) != 0 && line.rfind("    -o", 0) != 0) continue;
+        ++flags;
+        EXPECT_NE(line.find("(default: "), std::string::npos) << line;
+    }
+    EXPECT_GE(flags, 30);
+    const test::ProcessResult version = run("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_EQ(version.out, "wavefront " WF_VERSION "\n");
+}
+
 TEST_F(Cli, DevicesListsTheCpu) {
     const test::ProcessResult r = run("devices");
     EXPECT_EQ(r.exit_code, 0) << r.err;
