@@ -94,6 +94,14 @@ std::string describe_format(const Accessor& accessor) {
 // ---------------------------------------------------------------------------
 // Reading and parsing the file
 
+// What tinygltf can take; checked on the file's size before reading it, and
+// on bytes handed in directly.
+void check_size(const std::string& path, uint64_t size) {
+    if (size == 0) fail(path, "empty file");
+    // tinygltf takes lengths as unsigned int.
+    if (size > std::numeric_limits<unsigned int>::max()) fail(path, "file larger than 4 GiB");
+}
+
 std::vector<unsigned char> read_file(const std::string& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
@@ -101,10 +109,7 @@ std::vector<unsigned char> read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const std::streamoff size = in ? std::streamoff(in.tellg()) : -1;
     if (size < 0) fail(path, "cannot read file");
-    if (size == 0) fail(path, "empty file");
-    // tinygltf takes lengths as unsigned int.
-    if (uint64_t(size) > std::numeric_limits<unsigned int>::max())
-        fail(path, "file larger than 4 GiB");
+    check_size(path, uint64_t(size));
     std::vector<unsigned char> bytes(static_cast<size_t>(size));
     in.seekg(0);
     if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) fail(path, "cannot read file");
@@ -132,6 +137,7 @@ bool read_inside_folder(std::vector<unsigned char>* out, std::string* error, con
 }
 
 Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
+    check_size(path, bytes.size());
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
@@ -891,15 +897,25 @@ private:
     std::vector<NodeWorld> visited_;    // every node the walk reached, for its lights
 };
 
-} // namespace
-
-Scene load_gltf(const std::string& path, const LoadOptions& options) {
+// Both entry points; the file is read from `path` when `given` is null.
+Scene load(const std::string& path, const std::vector<unsigned char>* given, const LoadOptions& options) {
     try {
-        const Model model = parse_model(path, read_file(path));
+        const std::vector<unsigned char> read = given ? std::vector<unsigned char>() : read_file(path);
+        const Model model = parse_model(path, given ? *given : read);
         return SceneBuilder(model, path).build(options);
     } catch (const std::bad_alloc&) { // an accessor without a bufferView may claim any count
         throw InputError(path + ": not enough memory to load the file");
     }
+}
+
+} // namespace
+
+Scene load_gltf(const std::string& path, const LoadOptions& options) {
+    return load(path, nullptr, options);
+}
+
+Scene load_gltf_bytes(const std::string& path, const std::vector<unsigned char>& bytes, const LoadOptions& options) {
+    return load(path, &bytes, options);
 }
 
 } // namespace wf

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "scene.h"
 
@@ -21,5 +22,11 @@ struct LoadOptions {
 // Loads a .gltf or .glb. Throws InputError with a one-line message that names
 // the file (and the mesh, where one is at fault).
 Scene load_gltf(const std::string& path, const LoadOptions& options = {});
+
+// The same from the file's bytes, already read (the fuzz target feeds them
+// without a file). `path` names the file in messages, and its folder is where
+// external buffers and images are looked for.
+Scene load_gltf_bytes(const std::string& path, const std::vector<unsigned char>& bytes,
+                      const LoadOptions& options = {});
 
 } // namespace wf

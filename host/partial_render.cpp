@@ -49,8 +49,9 @@ PartialRender read_partial_render(const std::string& path, const ImageOptions& e
         return static_cast<size_t>(it - image.channel_names.begin());
     };
     for (const auto& [name, value] : expected) {
+        // A C++17 lambda cannot capture a structured binding (clang rejects it), only a copy of it.
         const auto it = std::find_if(image.options.begin(), image.options.end(),
-                                     [&](const auto& o) { return o.first == name; });
+                                     [&name = name](const auto& o) { return o.first == name; });
         const std::string found = it == image.options.end() ? "nothing" : "'" + it->second + "'";
         if (it == image.options.end() || it->second != value)
             throw InputError(path + ": was rendered with " + name + " " + found + ", this render has '" + value +
