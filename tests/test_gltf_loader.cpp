@@ -278,6 +278,14 @@ TEST_F(GltfLoaderTest, InfinitePositionIsNamed) {
                     {"inf.gltf", "mesh 'inf_mesh'", "POSITION 2", "infinite"});
 }
 
+// Found by tests/fuzz: corners this far apart are finite floats, but the BVH's
+// bounds extent overflows to inf and its binning turned inf * 0 into an int.
+TEST_F(GltfLoaderTest, PositionsNearFloatMaxAreNamed) {
+    GltfDocument doc;
+    doc.add_mesh_node("huge", triangle_primitive(doc.add_vec3({-3e38f, 0, 0, 3e38f, 0, 0, 0, 1, 0})));
+    expect_mentions(load_error(doc.write(dir_ / "huge.gltf")), {"huge.gltf", "mesh 'huge'", "float range"});
+}
+
 TEST_F(GltfLoaderTest, IndexOutOfRangeIsNamed) {
     GltfDocument doc;
     json primitive = triangle_primitive(doc.add_vec3(kTriangle));
