@@ -27,12 +27,14 @@ echo "fuzz: $(ls build-fuzz/seeds | wc -l) seeds from ${seed_roots[*]}, ${second
 # -max_len: every seed but DamagedHelmet.glb (3.8 MB, cut to it: its JSON
 # chunk comes first) fits whole. The corpus folder comes first: new inputs are
 # written there.
+# -seed: the same inputs in the same order on every run, so CI reproduces what
+# was run here (FUZZ_SEED=0 picks a random seed, for longer runs by hand).
 # -rss_limit_mb also caps a single allocation: a small file that asks for
 # gigabytes is reported (oom-*), not absorbed by the loader's bad_alloc catch.
 status=0
 build-fuzz/fuzz_gltf_loader build-fuzz/corpus build-fuzz/seeds \
   -max_total_time="$seconds" -max_len=2000000 -timeout=10 -rss_limit_mb=4096 \
-  -artifact_prefix=build-fuzz/ -print_final_stats=1 \
+  -seed="${FUZZ_SEED:-1}" -artifact_prefix=build-fuzz/ -print_final_stats=1 \
   >build-fuzz/fuzz.log 2>&1 || status=$?
 grep -E '^(Done [0-9]+ runs|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb)|ERROR|SUMMARY|Test unit written' \
   build-fuzz/fuzz.log || true
