@@ -31,6 +31,7 @@
 #include "device_scene.h"
 #include "embree_tracer.h"
 #include "errors.h"
+#include "exit_status.h"
 #include "gltf_loader.h"
 #include "hit_agreement.h"
 #include "layout_check.h"
@@ -249,14 +250,7 @@ int run(const Options& options) {
 int main(int argc, const char** argv) {
     try {
         return wf::bench::run(wf::bench::parse(argc, argv));
-    } catch (const wf::InputError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 2;
-    } catch (const cl::Error& e) {
-        std::cerr << "error: OpenCL call " << e.what() << " failed with code " << e.err() << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+    } catch (...) {
+        return wf::report_exception();
     }
 }

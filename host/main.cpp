@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "cli.h"
-#include "errors.h"
+#include "exit_status.h"
 #include "render_command.h"
 
 int main(int argc, const char** argv) {
@@ -34,18 +34,8 @@ int main(int argc, const char** argv) {
             return summary.interrupted_by ? 128 + summary.interrupted_by : 0; // as a shell reports a signal
         }
         }
-    } catch (const wf::InputError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 2;
-    } catch (const wf::DeviceError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    } catch (const cl::Error& e) {
-        std::cerr << "error: OpenCL call " << e.what() << " failed with code " << e.err() << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+    } catch (...) {
+        return wf::report_exception();
     }
     return 1;
 }

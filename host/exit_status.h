@@ -1,0 +1,12 @@
+// exit_status.h — the exit-code policy of every executable of the project, in
+// one place: 2 when the input is at fault (InputError), 1 when the machine is
+// (DeviceError, a failed OpenCL call, anything else), with one line on stderr.
+#pragma once
+
+namespace wf {
+
+// Call from within a catch (...) block: prints the exception in flight as
+// "error: ..." and returns the exit code for it.
+int report_exception();
+
+} // namespace wf
