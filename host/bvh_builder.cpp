@@ -1,244 +1,160 @@
-// bvh_builder.cpp — binned SAH construction (Wald, "On fast Construction of
-// SAH-based Bounding Volume Hierarchies", 2007).
+// bvh_builder.cpp — collapses the binary BVH into 8-wide nodes, as Embree's
+// wide builders do: a node starts from its binary node's two children and
+// keeps replacing the interior child of largest area by that child's two
+// children, until it has eight or none is left to open. SAH chose the binary
+// splits; opening the largest box first keeps the ones a ray meets most.
 //
-// Each node sorts its triangles' centroids into kBinCount bins per axis and
-// takes the bin boundary of least SAH cost. It stays a leaf when it holds at
-// most kMaxLeafSize triangles and no split pays for itself. Without a usable
-// split (all centroids in one place, or a box of zero area, which SAH cannot
-// rank), the triangles are halved at the centroid median instead, by index
-// when all centroids coincide. A split that would leave too few levels below
-// it is also replaced by the median split, which halves the count and so
-// always fits: depth stays below the stack size of the traversal.
+// Node 0 is a node of one slot, the scene's box: traversal reads that box and
+// starts at its child, the top of the tree.
+//
+// Leaves. The binary builder prices an interior node at a fraction of a wide
+// node's visit, which is what the collapse makes of most of them. But a child
+// left unopened, when its node is full, becomes a node of its own, a whole
+// visit; and at the bottom of the tree most of those would hold two leaves.
+// So such a child of at most kMaxLeafRun triangles is priced again, its root
+// at kNodeCost, and becomes one leaf (tested four triangles at a time) where
+// that is no dearer. Besides the time, it saves the memory of those nodes.
+//
+// The stack bound. A visit that meets k >= 2 children pushes k and pops one,
+// so a subtree needs room for k entries at once, and k - 1 more than the
+// child it goes on to. A binary subtree of height h (a leaf has 0) needs h + 1
+// left as it is. Each node is given a budget, the room left to its subtree:
+// the whole stack at the root, which kMaxBinaryDepth keeps at least the
+// root's height + 1. A child is opened only while every interior child keeps a
+// budget of at least its own height + 1 (the children's budget being the
+// node's, less k - 1), so every subtree fits its budget, and traversal never
+// overflows its stack. Trees of real scenes are far too shallow for the
+// budget ever to stop an opening.
 #include "bvh_builder.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
+#include <utility>
 
+#include "binary_bvh.h"
 #include "geometry/bvh_traverse.h"
-#include "scene.h"
 
 namespace wf {
 namespace {
 
-// 16 bins find splits nearly as good as a full sweep at a fraction of its cost.
-constexpr int kBinCount = 16;
-// Short leaves keep the device's work-items in step: a lane that tests 8
-// triangles holds up the others. 4 costs little in tree size.
-constexpr uint32_t kMaxLeafSize = 4;
-// The cost of visiting an interior node in units of one triangle test. A visit
-// loads and tests two boxes (more bytes than a triangle) and works the stack;
-// on the host, 2 rather than 1 gave 30% fewer nodes and 10% faster traversal.
-constexpr double kTraversalCost = 2.0;
-// The root is level 1; traversal keeps at most depth - 1 nodes on its stack.
-constexpr int kMaxDepth = WF_BVH_STACK_SIZE - 1;
+static_assert(kMaxBinaryDepth <= WF_BVH_STACK_SIZE, "the root's budget must cover its height + 1");
 
-struct PrimRef {
-    Bounds bounds;
-    glm::vec3 centroid;
-    uint32_t triangle;
-};
+// The most triangles in one leaf: what its child word can count.
+constexpr uint32_t kMaxLeafRun = (~WF_BVH_LEAF >> WF_BVH_COUNT_SHIFT) + 1;
+// A node visit in units of one four-triangle test (the binary builder's units).
+constexpr double kNodeCost = 1.0;
 
-// In double: the products of float extents cannot overflow there.
-double half_area(const Bounds& b) {
-    if (b.empty()) return 0.0;
-    const glm::dvec3 e = glm::dvec3(b.extent());
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
-// Depth of the subtree that median splits build over n triangles.
-int median_levels(uint32_t n) {
-    int levels = 1;
-    for (; n > kMaxLeafSize; n = (n + 1) / 2) ++levels;
-    return levels;
-}
-
-// Which bin a centroid falls in along each axis of the node's centroid bounds.
-class BinMap {
+class Collapser {
 public:
-    explicit BinMap(const Bounds& centroids) : lo_(centroids.lo) {
-        const glm::vec3 extent = centroids.extent();
-        for (int axis = 0; axis < 3; ++axis) {
-            // An axis too thin to divide puts everything in bin 0: no split on it.
-            const float scale = kBinCount / extent[axis];
-            scale_[axis] = std::isfinite(scale) ? scale : 0.0f;
+    explicit Collapser(BinaryBvh binary)
+        : binary_(std::move(binary)), first_(binary_.nodes.size()), triangles_(binary_.nodes.size()),
+          height_(binary_.nodes.size(), 0), as_leaf_(binary_.nodes.size(), false) {
+        // Children come after their parents, so a reverse sweep sees them first.
+        std::vector<double> cost(binary_.nodes.size()); // SAH cost times area, as the subtree would be alone
+        for (size_t n = binary_.nodes.size(); n-- > 0;) {
+            const BinaryBvhNode& node = binary_.nodes[n];
+            const double area = half_area(node.bounds);
+            if (node.count > 0) {
+                first_[n] = node.first;
+                triangles_[n] = node.count;
+                cost[n] = area;
+                continue;
+            }
+            const uint32_t left = node.first, right = node.first + 1;
+            first_[n] = first_[left]; // a subtree's triangles are consecutive
+            triangles_[n] = triangles_[left] + triangles_[right];
+            height_[n] = 1 + std::max(height_[left], height_[right]);
+            const double as_node = kNodeCost * area + cost[left] + cost[right];
+            const double as_leaf = area * ((triangles_[n] + kMaxLeafSize - 1) / kMaxLeafSize);
+            as_leaf_[n] = triangles_[n] <= kMaxLeafRun && as_leaf <= as_node;
+            cost[n] = std::min(as_leaf, as_node);
         }
     }
-    int bin(const glm::vec3& centroid, int axis) const {
-        const int b = static_cast<int>((centroid[axis] - lo_[axis]) * scale_[axis]);
-        return std::min(b, kBinCount - 1);
+
+    // Node 0 has one slot, the binary root: traversal starts below it and
+    // never pushes it.
+    Bvh build() {
+        bvh_.nodes.emplace_back();
+        fill(0, {0u}, WF_BVH_STACK_SIZE, 1);
+        bvh_.order = std::move(binary_.order);
+        return std::move(bvh_);
     }
 
 private:
-    glm::vec3 lo_;
-    glm::vec3 scale_;
-};
+    bool interior(uint32_t n) const { return binary_.nodes[n].count == 0; }
 
-struct SahSplit {
-    int axis = -1; // -1 when no boundary has triangles on both sides
-    int bin = 0;   // bins below it go left
-    uint32_t left_count = 0;
-    // The node's area times its SAH cost, in units of one triangle test.
-    double cost = std::numeric_limits<double>::infinity();
-};
+    // Whether children `kids` fit a node of this budget (see above).
+    bool fits(const std::vector<uint32_t>& kids, int budget) const {
+        const int k = static_cast<int>(kids.size());
+        int highest = -1; // the greatest height + 1 among interior children
+        for (uint32_t c : kids)
+            if (interior(c)) highest = std::max(highest, height_[c] + 1);
+        return k <= budget && highest <= budget - (k - 1);
+    }
 
-class Builder {
-public:
-    explicit Builder(const std::vector<glm::vec3>& positions);
-    Bvh build();
+    // The children of the wide node made from interior binary node `n`.
+    std::vector<uint32_t> open(uint32_t n, int budget) const {
+        std::vector<uint32_t> kids{binary_.nodes[n].first, binary_.nodes[n].first + 1};
+        while (kids.size() < WF_BVH_WIDTH) {
+            int best = -1;
+            double best_area = -1.0;
+            for (size_t i = 0; i < kids.size(); ++i) {
+                if (!interior(kids[i])) continue;
+                std::vector<uint32_t> opened = kids;
+                opened[i] = binary_.nodes[kids[i]].first;
+                opened.push_back(binary_.nodes[kids[i]].first + 1);
+                const double area = half_area(binary_.nodes[kids[i]].bounds);
+                if (area > best_area && fits(opened, budget)) {
+                    best = static_cast<int>(i);
+                    best_area = area;
+                }
+            }
+            if (best < 0) break;
+            const uint32_t opened = kids[static_cast<size_t>(best)];
+            kids[static_cast<size_t>(best)] = binary_.nodes[opened].first;
+            kids.push_back(binary_.nodes[opened].first + 1);
+        }
+        return kids;
+    }
 
-private:
-    void build_node(uint32_t node, uint32_t begin, uint32_t end, int depth);
-    // Reorders [begin, end) and returns where the second child starts, or end
-    // for a leaf.
-    uint32_t split(uint32_t begin, uint32_t end, const Bounds& bounds, const Bounds& centroids, int depth);
-    SahSplit best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map, double area) const;
-    uint32_t median_split(uint32_t begin, uint32_t end, const Bounds& centroids);
+    // Writes wide node `node` with these binary children, and their subtrees after it.
+    void fill(uint32_t node, const std::vector<uint32_t>& kids, int budget, int level) {
+        bvh_.depth = std::max(bvh_.depth, level);
+        const int child_budget = budget - (static_cast<int>(kids.size()) - 1);
+        const float inf = std::numeric_limits<float>::infinity();
+        for (int slot = 0; slot < WF_BVH_WIDTH; ++slot) {
+            const bool used = slot < static_cast<int>(kids.size());
+            const BinaryBvhNode* kid = used ? &binary_.nodes[kids[static_cast<size_t>(slot)]] : nullptr;
+            for (int axis = 0; axis < 3; ++axis) {
+                bvh_.nodes[node].bounds[2 * axis][slot] = used ? kid->bounds.lo[axis] : inf;
+                bvh_.nodes[node].bounds[2 * axis + 1][slot] = used ? kid->bounds.hi[axis] : -inf;
+            }
+            bvh_.nodes[node].child[slot] = 0u;
+            if (!used) continue;
+            const uint32_t binary_index = kids[static_cast<size_t>(slot)];
+            if (kid->count > 0 || as_leaf_[binary_index]) {
+                bvh_.nodes[node].child[slot] = WF_BVH_LEAF | (triangles_[binary_index] - 1) << WF_BVH_COUNT_SHIFT |
+                                               first_[binary_index];
+                continue;
+            }
+            const uint32_t index = static_cast<uint32_t>(bvh_.nodes.size());
+            bvh_.nodes[node].child[slot] = index;
+            bvh_.nodes.emplace_back();
+            fill(index, open(binary_index, child_budget), child_budget, level + 1);
+        }
+    }
 
-    std::vector<PrimRef> prims_;
+    // Per binary node: its subtree's triangles, its height, and whether, left
+    // unopened, it becomes a leaf rather than a node.
+    BinaryBvh binary_;
+    std::vector<uint32_t> first_, triangles_;
+    std::vector<int> height_;
+    std::vector<bool> as_leaf_;
     Bvh bvh_;
 };
 
-Builder::Builder(const std::vector<glm::vec3>& positions) {
-    if (positions.empty()) throw std::invalid_argument("build_bvh: no triangles");
-    if (positions.size() % 3 != 0)
-        throw std::invalid_argument("build_bvh: " + std::to_string(positions.size()) +
-                                    " corners is not a whole number of triangles");
-    const size_t count = positions.size() / 3;
-    if (count > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
-        throw std::invalid_argument("build_bvh: " + std::to_string(count) +
-                                    " triangles exceed what a RayHit can index");
-    prims_.resize(count);
-    for (size_t t = 0; t < count; ++t) {
-        Bounds b;
-        for (int corner = 0; corner < 3; ++corner) {
-            const glm::vec3& p = positions[3 * t + corner];
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                throw std::invalid_argument("build_bvh: triangle " + std::to_string(t) +
-                                            " has a corner that is not finite");
-            b.grow(p);
-        }
-        prims_[t] = PrimRef{b, b.center(), static_cast<uint32_t>(t)};
-    }
-}
-
-Bvh Builder::build() {
-    const uint32_t count = static_cast<uint32_t>(prims_.size());
-    bvh_.nodes.reserve(2 * size_t{count} - 1);
-    bvh_.nodes.resize(1);
-    build_node(0, 0, count, 1);
-    bvh_.order.resize(count);
-    for (uint32_t i = 0; i < count; ++i) bvh_.order[i] = prims_[i].triangle;
-    return std::move(bvh_);
-}
-
-void Builder::build_node(uint32_t node, uint32_t begin, uint32_t end, int depth) {
-    bvh_.depth = std::max(bvh_.depth, depth);
-    Bounds bounds, centroids;
-    for (uint32_t i = begin; i < end; ++i) {
-        bounds.grow(prims_[i].bounds);
-        centroids.grow(prims_[i].centroid);
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-        bvh_.nodes[node].lo[axis] = bounds.lo[axis];
-        bvh_.nodes[node].hi[axis] = bounds.hi[axis];
-    }
-    const uint32_t mid = split(begin, end, bounds, centroids, depth);
-    if (mid == end) {
-        bvh_.nodes[node].first = begin;
-        bvh_.nodes[node].count = end - begin;
-        return;
-    }
-    const uint32_t children = static_cast<uint32_t>(bvh_.nodes.size());
-    bvh_.nodes.resize(children + 2);
-    bvh_.nodes[node].first = children;
-    bvh_.nodes[node].count = 0;
-    build_node(children, begin, mid, depth + 1);
-    build_node(children + 1, mid, end, depth + 1);
-}
-
-uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, const Bounds& centroids,
-                        int depth) {
-    const uint32_t count = end - begin;
-    const double area = half_area(bounds);
-    if (count > 1 && area > 0.0) {
-        const BinMap bin_map(centroids);
-        const SahSplit sah = best_sah_split(begin, end, bin_map, area);
-        if (sah.axis >= 0) {
-            if (count <= kMaxLeafSize && area * count <= sah.cost) return end;
-            const uint32_t larger_child = std::max(sah.left_count, count - sah.left_count);
-            if (depth + median_levels(larger_child) <= kMaxDepth) {
-                const auto first = prims_.begin() + begin;
-                const auto middle = std::partition(first, prims_.begin() + end, [&](const PrimRef& p) {
-                    return bin_map.bin(p.centroid, sah.axis) < sah.bin;
-                });
-                return begin + static_cast<uint32_t>(middle - first);
-            }
-        }
-    }
-    if (count <= kMaxLeafSize) return end;
-    return median_split(begin, end, centroids);
-}
-
-SahSplit Builder::best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map, double area) const {
-    struct Bin {
-        Bounds bounds;
-        uint32_t count = 0;
-    };
-    std::array<std::array<Bin, kBinCount>, 3> binned{};
-    for (uint32_t i = begin; i < end; ++i) {
-        const PrimRef& p = prims_[i];
-        for (int axis = 0; axis < 3; ++axis) {
-            Bin& b = binned[axis][bin_map.bin(p.centroid, axis)];
-            b.bounds.grow(p.bounds);
-            ++b.count;
-        }
-    }
-    SahSplit best;
-    for (int axis = 0; axis < 3; ++axis) {
-        const std::array<Bin, kBinCount>& row = binned[axis];
-        // Area and count of everything at or above each boundary.
-        std::array<double, kBinCount> right_area{};
-        std::array<uint32_t, kBinCount> right_count{};
-        Bounds right;
-        uint32_t right_total = 0;
-        for (int b = kBinCount - 1; b > 0; --b) {
-            right.grow(row[b].bounds);
-            right_total += row[b].count;
-            right_area[b] = half_area(right);
-            right_count[b] = right_total;
-        }
-        Bounds left;
-        uint32_t left_total = 0;
-        for (int b = 1; b < kBinCount; ++b) {
-            left.grow(row[b - 1].bounds);
-            left_total += row[b - 1].count;
-            if (left_total == 0 || right_count[b] == 0) continue;
-            const double cost =
-                kTraversalCost * area + half_area(left) * left_total + right_area[b] * right_count[b];
-            if (cost < best.cost) best = SahSplit{axis, b, left_total, cost};
-        }
-    }
-    return best;
-}
-
-uint32_t Builder::median_split(uint32_t begin, uint32_t end, const Bounds& centroids) {
-    const uint32_t mid = begin + (end - begin) / 2;
-    const glm::vec3 extent = centroids.extent();
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    // Centroids all in one place: any half is as good as the other, keep the order.
-    if (extent[axis] > 0.0f)
-        std::nth_element(
-            prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
-            [axis](const PrimRef& a, const PrimRef& b) { return a.centroid[axis] < b.centroid[axis]; });
-    return mid;
-}
-
 } // namespace
 
-Bvh build_bvh(const std::vector<glm::vec3>& positions) { return Builder(positions).build(); }
+Bvh build_bvh(const std::vector<glm::vec3>& positions) { return Collapser(build_binary_bvh(positions)).build(); }
 
 } // namespace wf

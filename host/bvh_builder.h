@@ -1,10 +1,14 @@
 // bvh_builder.h — the bounding volume hierarchy over a scene's triangles, in
-// the layout the kernels traverse (kernels/geometry/bvh_traverse.h).
+// the layout the kernels traverse (kernels/geometry/bvh_traverse.h,
+// include/wavefront/scene_types.h): the binned-SAH binary tree of
+// host/binary_bvh.h collapsed into 8-wide nodes.
 //
-// Promises: a binary tree rooted at node 0 whose two children always sit side
-// by side; every triangle in exactly one leaf; every box holding its
-// children's boxes and its triangles' corners; depth below the traversal's
-// stack size. Built single-threaded by binned SAH; deterministic.
+// Promises: node 0 has one slot, the scene's box over the top of the tree;
+// every other node is the child of exactly one node before it; every triangle
+// in exactly one leaf, a run of one to eight consecutive BVH positions; every
+// child box holding its children's boxes and its triangles' corners, and every
+// unused slot's box empty, its child word 0; traversal's stack never fuller
+// than WF_BVH_STACK_SIZE. Deterministic.
 #pragma once
 
 #include <cstdint>
@@ -17,15 +21,13 @@
 namespace wf {
 
 struct Bvh {
-    std::vector<BvhNode> nodes;  // root at 0
+    std::vector<BvhNode> nodes;  // node 0 holds the scene's box over the top of the tree
     std::vector<uint32_t> order; // order[i] = index of the scene triangle placed at BVH position i
-    int depth = 0;               // deepest level (root = 1)
+    int depth = 0;               // deepest level of nodes (root = 1)
 };
 
-// positions: three corners per triangle (world space). Zero-area triangles are
-// kept. Throws std::invalid_argument when there are no triangles, when the
-// count of corners is not a multiple of 3, when a corner is not finite, or when
-// there are more triangles than an int32_t can index.
+// positions: three corners per triangle (world space); throws as
+// build_binary_bvh (host/binary_bvh.h) does.
 Bvh build_bvh(const std::vector<glm::vec3>& positions);
 
 } // namespace wf

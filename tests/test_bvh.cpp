@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "binary_bvh.h"
 #include "bvh_builder.h"
 #include "closed_meshes.h"
 #include "geometry/bvh_traverse.h"
@@ -68,13 +69,33 @@ struct BvhScene {
         return wf_device::bvh_any_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, t_max) != 0;
     }
     // The triangles the ray hits with no limit on t, in index order: those it
-    // hits below any t_max are among them.
+    // hits below any t_max are among them. Four at a time, in the lanes of the
+    // same test (each lane's answer is intersect_triangle's), for speed; the
+    // lanes past the last triangle repeat it.
     std::vector<int32_t> hit_triangles(const Ray& r) const {
         const wf_device::WatertightRay w = wf_device::watertight_ray(r.origin, r.direction);
         std::vector<int32_t> hit;
-        wf_device::TriangleHit h;
-        for (size_t i = 0; i < triangles.size(); ++i)
-            if (hits(w, i, kInfinity, &h)) hit.push_back(static_cast<int32_t>(i));
+        for (size_t first = 0; first < triangles.size(); first += 4) {
+            float lanes[3][3][4]; // corner, permuted axis, lane
+            for (size_t lane = 0; lane < 4; ++lane) {
+                const Triangle& tri = triangles[std::min(first + lane, triangles.size() - 1)];
+                const float* corners[3] = {tri.v0, tri.v1, tri.v2};
+                for (int c = 0; c < 3; ++c)
+                    for (int k = 0; k < 3; ++k)
+                        lanes[c][k][lane] = corners[c][k == 0 ? w.kx : (k == 1 ? w.ky : w.kz)];
+            }
+            wf_device::TriangleLanes four;
+            wf_device::CornerLanes* corner_lanes[3] = {&four.v0, &four.v1, &four.v2};
+            for (int c = 0; c < 3; ++c) {
+                corner_lanes[c]->x = wf_device::vload4(0, lanes[c][0]);
+                corner_lanes[c]->y = wf_device::vload4(0, lanes[c][1]);
+                corner_lanes[c]->z = wf_device::vload4(0, lanes[c][2]);
+            }
+            wf_device::TriangleHit h[4];
+            const uint32_t found = wf_device::intersect_triangles(&w, &four, kInfinity, kInfinity, h);
+            for (size_t lane = 0; lane < 4 && first + lane < triangles.size(); ++lane)
+                if (found >> lane & 1u) hit.push_back(static_cast<int32_t>(first + lane));
+        }
         return hit;
     }
     // Brute force: every triangle of `candidates` tested below t_max, and the
@@ -102,62 +123,100 @@ private:
     }
 };
 
-bool inside(const BvhNode& box, const glm::vec3& p) {
+// Slot `slot`'s box in a node.
+struct Box {
+    glm::vec3 lo, hi;
+};
+
+Box slot_box(const BvhNode& node, int slot) {
+    Box b;
+    for (int k = 0; k < 3; ++k) {
+        b.lo[k] = node.bounds[2 * k][slot];
+        b.hi[k] = node.bounds[2 * k + 1][slot];
+    }
+    return b;
+}
+
+bool inside(const Box& box, const glm::vec3& p) {
     for (int k = 0; k < 3; ++k)
         if (!(box.lo[k] <= p[k] && p[k] <= box.hi[k])) return false;
     return true;
 }
 
-bool inside(const BvhNode& outer, const BvhNode& inner) {
-    return inside(outer, corner(inner.lo)) && inside(outer, corner(inner.hi));
-}
+bool inside(const Box& outer, const Box& inner) { return inside(outer, inner.lo) && inside(outer, inner.hi); }
 
 // The promises of bvh_builder.h, checked by walking the tree from the root.
-void expect_valid(const BvhScene& scene) {
-    const Bvh& bvh = scene.bvh;
-    const size_t count = scene.positions.size() / 3;
-    ASSERT_EQ(bvh.order.size(), count);
-    std::vector<int> in_order(count, 0);
-    for (uint32_t t : bvh.order) {
-        ASSERT_LT(t, count);
-        ++in_order[t];
+class TreeCheck {
+public:
+    explicit TreeCheck(const BvhScene& scene)
+        : scene_(scene), in_leaves_(scene.bvh.order.size(), 0), visits_(scene.bvh.nodes.size(), 0) {}
+
+    void run() {
+        const Bvh& bvh = scene_.bvh;
+        const size_t count = scene_.positions.size() / 3;
+        ASSERT_EQ(bvh.order.size(), count);
+        std::vector<int> in_order(count, 0);
+        for (uint32_t t : bvh.order) {
+            ASSERT_LT(t, count);
+            ++in_order[t];
+        }
+        const int need = walk(0, 1, nullptr);
+        for (size_t t = 0; t < count; ++t) {
+            EXPECT_EQ(in_order[t], 1) << "triangle " << t << " in order";
+            EXPECT_EQ(in_leaves_[t], 1) << "BVH position " << t << " in leaves";
+        }
+        for (size_t n = 0; n < visits_.size(); ++n) EXPECT_EQ(visits_[n], 1) << "node " << n;
+        EXPECT_EQ(depth_, bvh.depth);
+        EXPECT_LE(need, WF_BVH_STACK_SIZE) << "traversal could overflow its stack";
     }
-    std::vector<int> in_leaves(count, 0), visits(bvh.nodes.size(), 0);
-    std::vector<std::pair<uint32_t, int>> stack{{0u, 1}};
-    int depth = 0;
-    while (!stack.empty()) {
-        const auto [index, level] = stack.back();
-        stack.pop_back();
-        depth = std::max(depth, level);
-        ++visits[index];
-        const BvhNode& node = bvh.nodes[index];
-        if (node.count > 0) {
-            ASSERT_LE(size_t{node.first} + node.count, count);
-            for (uint32_t i = node.first; i < node.first + node.count; ++i) {
-                ++in_leaves[i];
-                for (int c = 0; c < 3; ++c)
-                    EXPECT_TRUE(inside(node, scene.positions[3 * size_t{bvh.order[i]} + c]))
-                        << "node " << index;
+
+private:
+    // The stack room that traversal below this node may need when every box
+    // is met: k pushed at once, k - 1 more than the child it goes on to.
+    int walk(uint32_t index, int level, const Box* parent) {
+        depth_ = std::max(depth_, level);
+        ++visits_[index];
+        const BvhNode& node = scene_.bvh.nodes[index];
+        int used = 0, deepest = 0;
+        for (int slot = 0; slot < WF_BVH_WIDTH; ++slot) {
+            const Box box = slot_box(node, slot);
+            if (box.lo.x == kInfinity) { // unused: an empty box, which no ray meets, and no child
+                for (int k = 0; k < 3; ++k) EXPECT_TRUE(box.lo[k] == kInfinity && box.hi[k] == -kInfinity);
+                EXPECT_EQ(node.child[slot], 0u) << "node " << index << " slot " << slot;
+                continue;
             }
-            continue;
+            ++used;
+            if (parent) EXPECT_TRUE(inside(*parent, box)) << "node " << index << " slot " << slot << " outside";
+            const uint32_t child = node.child[slot];
+            if (child & WF_BVH_LEAF) {
+                const uint32_t first = child & WF_BVH_FIRST_MASK;
+                const uint32_t count = ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1;
+                EXPECT_LE(size_t{first} + count, in_leaves_.size());
+                for (uint32_t i = first; i < first + count && i < in_leaves_.size(); ++i) {
+                    ++in_leaves_[i];
+                    for (int c = 0; c < 3; ++c)
+                        EXPECT_TRUE(inside(box, scene_.positions[3 * size_t{scene_.bvh.order[i]} + c]))
+                            << "node " << index << " slot " << slot;
+                }
+                continue;
+            }
+            // Children come after their parent, so the walk cannot cycle.
+            EXPECT_GT(child, index);
+            EXPECT_LT(child, scene_.bvh.nodes.size());
+            if (child <= index || child >= scene_.bvh.nodes.size()) continue;
+            deepest = std::max(deepest, walk(child, level + 1, &box));
         }
-        // Children come after their parent, so the walk cannot cycle.
-        ASSERT_GT(node.first, index);
-        ASSERT_LT(size_t{node.first} + 1, bvh.nodes.size());
-        for (uint32_t child = node.first; child <= node.first + 1; ++child) {
-            EXPECT_TRUE(inside(node, bvh.nodes[child]))
-                << "node " << child << " outside its parent " << index;
-            stack.emplace_back(child, level + 1);
-        }
+        EXPECT_GT(used, 0) << "node " << index;
+        if (index == 0) EXPECT_EQ(used, 1) << "node 0 holds the scene's box alone";
+        return used == 1 ? deepest : std::max(used, used - 1 + deepest);
     }
-    for (size_t t = 0; t < count; ++t) {
-        EXPECT_EQ(in_order[t], 1) << "triangle " << t << " in order";
-        EXPECT_EQ(in_leaves[t], 1) << "BVH position " << t << " in leaves";
-    }
-    for (size_t n = 0; n < visits.size(); ++n) EXPECT_EQ(visits[n], 1) << "node " << n;
-    EXPECT_EQ(depth, bvh.depth);
-    EXPECT_LT(bvh.depth, WF_BVH_STACK_SIZE);
-}
+
+    const BvhScene& scene_;
+    std::vector<int> in_leaves_, visits_;
+    int depth_ = 0;
+};
+
+void expect_valid(const BvhScene& scene) { TreeCheck(scene).run(); }
 
 // Closest hits and any-hit verdicts against brute force; returns the number of
 // rays that hit something.
@@ -314,14 +373,21 @@ TEST(Bvh, RayAlongABoxFaceEntersTheBox) {
     // A ray running exactly in a face plane of a box, as an axis-aligned ray
     // from a point on an axis-aligned floor does, is inside the closed box,
     // whichever sign its zero component has.
-    BvhNode box{};
-    store(box.lo, glm::vec3(0.0f));
-    store(box.hi, glm::vec3(1.0f));
+    // The box fills slot 3 of a node whose other slots are unused but for
+    // slot 0, the scene's box for box_ray, which is the same box.
+    BvhNode node{};
+    for (int slot = 0; slot < WF_BVH_WIDTH; ++slot)
+        for (int k = 0; k < 3; ++k) {
+            node.bounds[2 * k][slot] = slot == 0 || slot == 3 ? 0.0f : kInfinity;
+            node.bounds[2 * k + 1][slot] = slot == 0 || slot == 3 ? 1.0f : -kInfinity;
+        }
     for (float y : {0.0f, 1.0f}) {
         for (float zero : {0.0f, -0.0f}) {
             const glm::vec3 origin(0.5f, y, -1.0f);
-            const wf_device::BoxRay ray = wf_device::box_ray(&box, origin, glm::vec3(0.0f, zero, 1.0f));
-            EXPECT_NEAR(wf_device::box_entry(&ray, &box, kInfinity), 1.0f, 1e-5f) << "y = " << y;
+            const wf_device::BoxRay ray = wf_device::box_ray(&node, origin, glm::vec3(0.0f, zero, 1.0f));
+            float entry[WF_BVH_WIDTH];
+            EXPECT_EQ(wf_device::child_entries(&ray, &node, kInfinity, entry), 1u | 1u << 3) << "y = " << y;
+            EXPECT_NEAR(entry[3], 1.0f, 1e-5f) << "y = " << y;
         }
     }
 }
@@ -351,7 +417,7 @@ TEST(Bvh, IdenticalTrianglesSplitInHalf) {
         add_triangle(p, glm::vec3(-1, -1, 3), glm::vec3(2, 0, 3), glm::vec3(0, 2, 3.5f));
     const BvhScene scene(p);
     expect_valid(scene);
-    EXPECT_EQ(scene.bvh.depth, 13); // 10000 halved 12 times reaches leaves of at most 4
+    EXPECT_EQ(build_binary_bvh(p).depth, 13); // 10000 halved 12 times reaches leaves of at most 4
     // Every copy is hit at the same t: of the emitters among them, the lowest index wins.
     const Ray ray{glm::vec3(0.1f, 0.2f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
     const RayHit hit = scene.closest(ray);
@@ -410,7 +476,7 @@ TEST(Bvh, ExponentialSpacingStaysWithinTheStack) {
     ASSERT_GT(p.size() / 3, 66u);
     const BvhScene scene(p);
     expect_valid(scene);
-    EXPECT_GT(scene.bvh.depth, 48) << "the input no longer drives SAH towards the depth limit";
+    EXPECT_GT(build_binary_bvh(p).depth, 48) << "the input no longer drives SAH towards the depth limit";
     Random r(5);
     std::vector<Ray> rays;
     for (int i = 0; i < 2000; ++i) {

@@ -5,9 +5,17 @@
  * Shared code is written against this vocabulary: fixed-width integers, float2
  * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
  * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, acos,
- * atan2, floor, pow and copysign, and WF_GLOBAL for the address space of scene
- * buffers. On the device these are the OpenCL built-ins; on the host they map
- * onto GLM, <cmath> and <cstring>. Nothing else belongs here. */
+ * atan2, floor, pow and copysign, clz, and WF_GLOBAL for the address space of
+ * scene buffers. For SIMD inside a work-item (the BVH traversal): float4 and
+ * int4 lanes with their arithmetic, max and fabs, the relational
+ * built-ins isless, isgreater, islessequal and isequal (-1 or 0 per lane),
+ * select, vload4 and vstore4; float8 lanes minus or times a scalar, min, max,
+ * islessequal (int8), vload8 and vstore8; and lane_bits4/8, the one helper
+ * OpenCL lacks: bit i set where lane i is true. On the device these are the
+ * OpenCL built-ins; on the host they map onto GLM, <cmath> and <cstring>, and
+ * float8 onto an array computed lane by lane: the same IEEE operations, so the
+ * same bits. WF_FORCE_INLINE and WF_PREFETCH serve the traversal's inner loop.
+ * Nothing else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
 #define WAVEFRONT_COMPAT_H
 
@@ -17,12 +25,27 @@ typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_INLINE inline
+/* For the traversal's inner loop, which PoCL's inliner otherwise leaves as calls. */
+#define WF_FORCE_INLINE inline __attribute__((always_inline))
+/* OpenCL's prefetch() does nothing on PoCL; clang's builtin does. */
+#ifdef __clang__
+#define WF_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define WF_PREFETCH(p)
+#endif
 #define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define WF_DEVICE_BEGIN
 #define WF_DEVICE_END
 WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
+#ifdef __AVX__ /* an x86 CPU device, as PoCL's: one movmskps, where LLVM would shuffle */
+WF_INLINE uint lane_bits4(int4 m) { return (uint)__builtin_ia32_movmskps(as_float4(m)); }
+WF_INLINE uint lane_bits8(int8 m) { return (uint)__builtin_ia32_movmskps256(as_float8(m)); }
+#else
+WF_INLINE uint lane_bits4(int4 m) { return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8)); }
+WF_INLINE uint lane_bits8(int8 m) { return lane_bits4(m.lo) | lane_bits4(m.hi) << 4; }
+#endif
 
 #else /* host C++ */
 
@@ -33,6 +56,8 @@ WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
 
 #define WF_GLOBAL
 #define WF_INLINE inline
+#define WF_FORCE_INLINE inline
+#define WF_PREFETCH(p) __builtin_prefetch(p)
 
 namespace wf_compat {
 using float2 = glm::vec2;
@@ -67,6 +92,61 @@ using std::floor;
 using std::pow;
 using std::sin;
 using std::sqrt;
+inline uint32_t clz(uint32_t x) { return x == 0 ? 32u : static_cast<uint32_t>(__builtin_clz(x)); }
+
+/* Four lanes: GLM's arithmetic, and the built-ins it lacks. */
+using int4 = glm::ivec4;
+inline float4 max(float4 a, float4 b) { return float4(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z), max(a.w, b.w)); }
+inline float4 fabs(float4 v) { return glm::abs(v); }
+inline int4 lanes_true(bool x, bool y, bool z, bool w) { return -int4(x, y, z, w); }
+inline int4 isless(float4 a, float4 b) { return lanes_true(a.x < b.x, a.y < b.y, a.z < b.z, a.w < b.w); }
+inline int4 isgreater(float4 a, float4 b) { return isless(b, a); }
+inline int4 islessequal(float4 a, float4 b) { return lanes_true(a.x <= b.x, a.y <= b.y, a.z <= b.z, a.w <= b.w); }
+inline int4 isequal(float4 a, float4 b) { return lanes_true(a.x == b.x, a.y == b.y, a.z == b.z, a.w == b.w); }
+inline float4 select(float4 a, float4 b, int4 c) {
+    return float4(c.x < 0 ? b.x : a.x, c.y < 0 ? b.y : a.y, c.z < 0 ? b.z : a.z, c.w < 0 ? b.w : a.w);
+}
+inline uint32_t lane_bits4(int4 m) { return static_cast<uint32_t>((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8)); }
+inline float4 vload4(size_t offset, const float* p) {
+    return float4(p[4 * offset], p[4 * offset + 1], p[4 * offset + 2], p[4 * offset + 3]);
+}
+inline void vstore4(float4 v, size_t offset, float* p) {
+    for (int i = 0; i < 4; ++i) p[4 * offset + i] = v[i];
+}
+
+/* Eight lanes, one array element each. */
+struct float8 {
+    float s[8];
+};
+struct int8 {
+    int32_t s[8];
+};
+template <class F> float8 lanewise(F f) {
+    float8 r;
+    for (int i = 0; i < 8; ++i) r.s[i] = f(i);
+    return r;
+}
+template <class F> int8 lanes_true8(F f) {
+    int8 r;
+    for (int i = 0; i < 8; ++i) r.s[i] = f(i) ? -1 : 0;
+    return r;
+}
+inline float8 operator-(float8 a, float b) { return lanewise([&](int i) { return a.s[i] - b; }); }
+inline float8 operator*(float8 a, float b) { return lanewise([&](int i) { return a.s[i] * b; }); }
+inline float8 min(float8 a, float8 b) { return lanewise([&](int i) { return min(a.s[i], b.s[i]); }); }
+inline float8 max(float8 a, float8 b) { return lanewise([&](int i) { return max(a.s[i], b.s[i]); }); }
+inline float8 min(float8 a, float b) { return lanewise([&](int i) { return min(a.s[i], b); }); }
+inline float8 max(float8 a, float b) { return lanewise([&](int i) { return max(a.s[i], b); }); }
+inline int8 islessequal(float8 a, float8 b) { return lanes_true8([&](int i) { return a.s[i] <= b.s[i]; }); }
+inline uint32_t lane_bits8(int8 m) {
+    uint32_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits |= static_cast<uint32_t>(m.s[i] & 1) << i;
+    return bits;
+}
+inline float8 vload8(size_t offset, const float* p) { return lanewise([&](int i) { return p[8 * offset + i]; }); }
+inline void vstore8(float8 v, size_t offset, float* p) {
+    for (int i = 0; i < 8; ++i) p[8 * offset + i] = v.s[i];
+}
 } // namespace wf_compat
 
 /* Device code compiled for the host lives in namespace wf_device, so its names

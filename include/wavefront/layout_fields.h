@@ -11,7 +11,7 @@
     X(TriangleTexcoords) X(TriangleTangents)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
-    X(BvhNode, lo) X(BvhNode, first) X(BvhNode, hi) X(BvhNode, count)                             \
+    X(BvhNode, bounds) X(BvhNode, child)                                                           \
     X(Triangle, v0) X(Triangle, material) X(Triangle, v1) X(Triangle, light) X(Triangle, v2)      \
     X(Triangle, mesh)                                                                             \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \

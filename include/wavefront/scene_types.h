@@ -10,13 +10,22 @@
 
 #include "wavefront/compat.h"
 
-/* Binary BVH node. Interior (count == 0): children at first and first + 1.
- * Leaf (count > 0): triangles [first, first + count) in BVH order. */
+/* 8-wide BVH node (host/bvh_builder.h, kernels/geometry/bvh_traverse.h): the
+ * boxes of up to eight children, one lane each, so that one ray meets all
+ * eight with float8 arithmetic. bounds rows: lower x, upper x, lower y, upper
+ * y, lower z, upper z. An unused slot has an empty box (lower +inf, upper
+ * -inf), which no ray meets, and a child word of 0. A child word is an
+ * interior node's index (never 0: node 0 is no one's child), or for a leaf
+ * WF_BVH_LEAF | (count - 1) << WF_BVH_COUNT_SHIFT | first: the triangles
+ * [first, first + count) of the Triangle buffer (BVH order), count from 1 to
+ * 8, tested four at a time in float4 lanes. */
+#define WF_BVH_WIDTH 8
+#define WF_BVH_LEAF 0x80000000u
+#define WF_BVH_COUNT_SHIFT 28
+#define WF_BVH_FIRST_MASK 0x0fffffffu
 typedef struct BvhNode {
-    float lo[3];
-    uint32_t first;
-    float hi[3];
-    uint32_t count;
+    float bounds[6][WF_BVH_WIDTH];
+    uint32_t child[WF_BVH_WIDTH];
 } BvhNode;
 
 /* A triangle's corners in world space, in BVH order. The fourth word of each

@@ -25,16 +25,19 @@
  * the same light: that direction must find the light, or light is lost.
  * Every part of the rule is a least value or a comparison with one, so it is
  * the same in any order, and the window's end can cull boxes: no node beyond
- * it can change the answer.
+ * it can change the answer. Nor can a hit whose t is beyond it: that hit is
+ * not the closest, is not an emitter inside the window, and leaves the
+ * window's end where it is; so the leaf test drops such lanes before it
+ * bounds their error.
  *
  * The box test must never cull a node holding a triangle that the triangle
- * test hits. Three things could make it do so, and each is answered:
+ * test hits. Four things could make it do so, and each is answered:
  *  - Its own rounding: the far distance is scaled by 1 + 2^-21 >= 1 + 2 gamma_3
  *    (Ize, "Robust BVH Ray Traversal", JCGT 2013; pbrt-v4).
  *  - The triangle test's rounding, which acts like moving each vertex by up to
  *    4 ulps of its distance from the origin (Woop et al. 2013, section 5), and
  *    moves t by as much. Every box is grown by four times that:
- *    pad = 2^-20 (16 ulps) x (the root box's reach from the origin + |origin|).
+ *    pad = 2^-20 (16 ulps) x (the scene box's reach from the origin + |origin|).
  *    It costs nothing per node: the origin used against lower planes moves up
  *    by pad, the one used against upper planes down.
  *  - A direction component of 0: a moved origin on a plane of that axis
@@ -43,9 +46,30 @@
  *    the arithmetic free of NaN; since the growth keeps a ray inside a slab at
  *    least pad from its planes, it leaves the slab only at pad * FLT_MAX,
  *    beyond every hit.
+ *  - Coordinates so large that origin +- pad overflows: infinite origins
+ *    would make every slab the whole line, so every box is met outright
+ *    (child_entries), as it would be then.
  *
- * Nodes are visited front to back with a stack of WF_BVH_STACK_SIZE indices;
- * the builder keeps every tree shallower than that.
+ * Layout (include/wavefront/scene_types.h, host/bvh_builder.h): nodes are 8
+ * wide, and one visit tests the ray against all eight child boxes at once in
+ * float8 lanes: one vload8 per plane row, with the planes the ray enters by
+ * chosen per axis once per ray (as min and max of the two distances would
+ * choose them), so an unused slot's empty box of infinities is simply missed.
+ * Node 0 has one slot, the scene's box (whence the pad) over the top of the
+ * tree, where traversal starts. A leaf is a run of up to eight consecutive
+ * triangles of the Triangle buffer, gathered four at a time into float4 lanes
+ * for the triangle test (geometry/triangle_intersect.h); traversal keeps no
+ * copy of the triangles.
+ *
+ * Order of visits: a visit that meets one child goes straight on to it; one
+ * that meets several pushes them all, sorted so that the nearest is on top
+ * (unsorted for any-hit queries, where order buys nothing), and goes on to
+ * the top one. Each pending child keeps where the ray enters its box, and is
+ * dropped when popped if the window's end has since fallen below that entry:
+ * the box test itself would now fail (its exit is scaled by the same
+ * 1 + 2^-21), so nothing is culled that the test would keep. The stack holds
+ * WF_BVH_STACK_SIZE children; the builder gives every subtree no more than
+ * the room left to it (host/bvh_builder.cpp says how).
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -68,6 +92,7 @@
 #define WF_HIT_PASSES(triangles, i, hit) 1
 #endif
 
+/* Pending children, pushed by a node visit that meets several; see above. */
 #define WF_BVH_STACK_SIZE 64
 
 WF_DEVICE_BEGIN
@@ -79,37 +104,75 @@ typedef struct RayHit {
     int32_t triangle; /* -1 on a miss, else an index into the BVH-ordered triangles */
 } RayHit;
 
-/* A ray prepared for slab tests against boxes grown as described above. */
+/* A ray prepared for slab tests against boxes grown as described above. Per
+ * axis, the planes it enters a box by (lower ones where the direction is
+ * positive) and the origin moved for them; likewise for the planes it leaves
+ * by. */
 typedef struct BoxRay {
-    float3 origin_lo; /* the origin for distances to lower planes */
-    float3 origin_hi; /* the origin for distances to upper planes */
+    float3 near_origin;
+    float3 far_origin;
     float3 inv_direction;
+    int near_row[3]; /* rows of BvhNode.bounds; the far row is near_row ^ 1 */
+    int unbounded;   /* origin +- pad overflowed: every box is met */
 } BoxRay;
 
-WF_INLINE BoxRay box_ray(WF_GLOBAL const BvhNode* root, float3 origin, float3 direction) {
-    const float3 reach = max(fabs(load_float3(root->lo) - origin), fabs(load_float3(root->hi) - origin));
+/* `nodes` is the BVH: its node 0 holds the scene's box in slot 0. */
+WF_INLINE BoxRay box_ray(WF_GLOBAL const BvhNode* nodes, float3 origin, float3 direction) {
+    const float3 lo = make_float3(nodes->bounds[0][0], nodes->bounds[2][0], nodes->bounds[4][0]);
+    const float3 hi = make_float3(nodes->bounds[1][0], nodes->bounds[3][0], nodes->bounds[5][0]);
+    const float3 reach = max(fabs(lo - origin), fabs(hi - origin));
     /* The |origin| term keeps origin +- pad some ulps away from origin, so the
      * growth survives rounding however far the scene is from the world origin. */
     const float3 offset = fabs(origin);
     const float pad = 0x1p-20f * (reach.x + reach.y + reach.z + offset.x + offset.y + offset.z);
     const float flt_max = 0x1.fffffep127f;
+    const float3 origin_lo = origin + pad; /* for distances to lower planes */
+    const float3 origin_hi = origin - pad; /* for distances to upper planes */
     BoxRay ray;
-    ray.origin_lo = origin + pad;
-    ray.origin_hi = origin - pad;
     ray.inv_direction = max(min(1.0f / direction, make_float3(flt_max, flt_max, flt_max)),
                             make_float3(-flt_max, -flt_max, -flt_max));
+    /* Never 0 nor NaN, so its sign says which planes come first. Taking them
+     * so is what min and max of the two distances would take, since rounding
+     * keeps their order; and it lets an empty box's infinities miss. */
+    const int flip_x = ray.inv_direction.x < 0.0f, flip_y = ray.inv_direction.y < 0.0f,
+              flip_z = ray.inv_direction.z < 0.0f;
+    ray.near_origin = make_float3(flip_x ? origin_hi.x : origin_lo.x, flip_y ? origin_hi.y : origin_lo.y,
+                                  flip_z ? origin_hi.z : origin_lo.z);
+    ray.far_origin = make_float3(flip_x ? origin_lo.x : origin_hi.x, flip_y ? origin_lo.y : origin_hi.y,
+                                 flip_z ? origin_lo.z : origin_hi.z);
+    ray.near_row[0] = flip_x;
+    ray.near_row[1] = 2 + flip_y;
+    ray.near_row[2] = 4 + flip_z;
+    const float3 moved = max(fabs(origin_lo), fabs(origin_hi));
+    ray.unbounded = !(max(max(moved.x, moved.y), moved.z) <= flt_max);
     return ray;
 }
 
-/* Where the ray enters the node's box when it meets it before t_limit, else -1. */
-WF_INLINE float box_entry(const BoxRay* ray, WF_GLOBAL const BvhNode* node, float t_limit) {
-    const float3 t_lo = (load_float3(node->lo) - ray->origin_lo) * ray->inv_direction;
-    const float3 t_hi = (load_float3(node->hi) - ray->origin_hi) * ray->inv_direction;
-    const float3 t_near = min(t_lo, t_hi);
-    const float3 t_far = max(t_lo, t_hi);
-    const float entry = max(max(t_near.x, t_near.y), max(t_near.z, 0.0f));
-    const float exit = min(min(t_far.x, t_far.y), min(t_far.z, t_limit)) * (1.0f + 0x1p-21f);
-    return entry <= exit ? entry : -1.0f;
+/* The children whose box the ray meets before t_limit, as bit i for slot i,
+ * and in entry[i] where it enters slot i's box. */
+WF_FORCE_INLINE uint32_t child_entries(const BoxRay* ray, WF_GLOBAL const BvhNode* node, float t_limit,
+                                       float* entry) {
+    if (ray->unbounded) {
+        /* Every slab is the whole line, as infinite origins make it. But an
+         * unused slot's infinities would meet them as inf - inf = NaN, so its
+         * child word, 0 only there, says which slots hold a box. */
+        uint32_t used = 0u;
+        for (int i = 0; i < WF_BVH_WIDTH; ++i) {
+            entry[i] = 0.0f;
+            used |= (node->child[i] != 0u ? 1u : 0u) << i;
+        }
+        return used;
+    }
+    const float8 near_x = (vload8(0, node->bounds[ray->near_row[0]]) - ray->near_origin.x) * ray->inv_direction.x;
+    const float8 near_y = (vload8(0, node->bounds[ray->near_row[1]]) - ray->near_origin.y) * ray->inv_direction.y;
+    const float8 near_z = (vload8(0, node->bounds[ray->near_row[2]]) - ray->near_origin.z) * ray->inv_direction.z;
+    const float8 far_x = (vload8(0, node->bounds[ray->near_row[0] ^ 1]) - ray->far_origin.x) * ray->inv_direction.x;
+    const float8 far_y = (vload8(0, node->bounds[ray->near_row[1] ^ 1]) - ray->far_origin.y) * ray->inv_direction.y;
+    const float8 far_z = (vload8(0, node->bounds[ray->near_row[2] ^ 1]) - ray->far_origin.z) * ray->inv_direction.z;
+    const float8 enter = max(max(near_x, near_y), max(near_z, 0.0f));
+    const float8 exit = min(min(far_x, far_y), min(far_z, t_limit)) * (1.0f + 0x1p-21f);
+    vstore8(enter, 0, entry);
+    return lane_bits8(islessequal(enter, exit));
 }
 
 /* The hits met so far, as the rule above needs them. */
@@ -132,11 +195,11 @@ WF_INLINE HitSelection no_hits(float t_max) {
 
 /* Whether a hit at t on triangle `index` comes before `than` (none yet: -1 at
  * t_max, which every hit is below): least t, then lower index. */
-WF_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
+WF_FORCE_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
     return t < than->t || (t == than->t && index < than->triangle);
 }
 
-WF_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
+WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
     RayHit h;
     h.t = hit->t;
     h.u = hit->u;
@@ -151,51 +214,111 @@ WF_INLINE RayHit selected_hit(const HitSelection* s) {
     return s->emitter.triangle >= 0 && s->emitter.t <= s->window_end ? s->emitter : s->closest;
 }
 
+/* One corner of four triangles, permuted for the ray as the test wants it. */
+WF_FORCE_INLINE CornerLanes corner_lanes(const WatertightRay* ray, WF_GLOBAL const float* p0,
+                                         WF_GLOBAL const float* p1, WF_GLOBAL const float* p2,
+                                         WF_GLOBAL const float* p3) {
+    CornerLanes c;
+    c.x = make_float4(p0[ray->kx], p1[ray->kx], p2[ray->kx], p3[ray->kx]);
+    c.y = make_float4(p0[ray->ky], p1[ray->ky], p2[ray->ky], p3[ray->ky]);
+    c.z = make_float4(p0[ray->kz], p1[ray->kz], p2[ray->kz], p3[ray->kz]);
+    return c;
+}
+
+/* A leaf's triangles in float4 lanes; lanes past its count repeat its last
+ * triangle, which changes no answer. */
+WF_FORCE_INLINE TriangleLanes leaf_triangles(const WatertightRay* ray, WF_GLOBAL const Triangle* triangles,
+                                             uint32_t first, uint32_t count) {
+    WF_GLOBAL const Triangle* t0 = triangles + first;
+    WF_GLOBAL const Triangle* t1 = triangles + first + (count > 1u ? 1u : 0u);
+    WF_GLOBAL const Triangle* t2 = triangles + first + (count > 2u ? 2u : count - 1u);
+    WF_GLOBAL const Triangle* t3 = triangles + first + (count - 1u);
+    TriangleLanes lanes;
+    lanes.v0 = corner_lanes(ray, t0->v0, t1->v0, t2->v0, t3->v0);
+    lanes.v1 = corner_lanes(ray, t0->v1, t1->v1, t2->v1, t3->v1);
+    lanes.v2 = corner_lanes(ray, t0->v2, t1->v2, t2->v2, t3->v2);
+    return lanes;
+}
+
+/* A pushed child is met later: its memory can be on its way meanwhile. */
+WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
+                                    uint32_t child) {
+    WF_GLOBAL const char* p = (child & WF_BVH_LEAF)
+                                  ? (WF_GLOBAL const char*)(triangles + (child & WF_BVH_FIRST_MASK))
+                                  : (WF_GLOBAL const char*)(nodes + child);
+    WF_PREFETCH(p);
+    WF_PREFETCH(p + 64);
+    WF_PREFETCH(p + 128);
+    WF_PREFETCH(p + 192);
+}
+
+WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u - bits)); }
+
 /* The selected hit in (0, t_max), or the first one found when
- * stop_at_first_hit is set. A popped node is not tested again: it was culled
- * against the window's end when pushed, and an earlier end since then still
- * culls its children. */
+ * stop_at_first_hit is set. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
                               float3 origin, float3 direction, float t_max,
                               int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     const WatertightRay ray = watertight_ray(origin, direction);
     const BoxRay box = box_ray(nodes, origin, direction);
     HitSelection selection = no_hits(t_max);
-    if (box_entry(&box, nodes, t_max) < 0.0f) return selected_hit(&selection);
 
-    uint32_t stack[WF_BVH_STACK_SIZE];
+    uint32_t stack_child[WF_BVH_STACK_SIZE];
+    float stack_entry[WF_BVH_STACK_SIZE];
     int stack_size = 0;
-    uint32_t node = 0;
+    /* Node 0's one child, the top of the tree: its own boxes test the ray
+     * against the scene's. */
+    uint32_t child = nodes->child[0];
     for (;;) {
-        const uint32_t first = nodes[node].first;
-        const uint32_t count = nodes[node].count;
-        if (count == 0) {
-            const float entry_a = box_entry(&box, nodes + first, selection.window_end);
-            const float entry_b = box_entry(&box, nodes + first + 1, selection.window_end);
-            if (entry_a >= 0.0f && entry_b >= 0.0f) {
-                /* The nearer child first: a hit there may cull the other. */
-                const uint32_t nearer = entry_a <= entry_b ? first : first + 1;
-                stack[stack_size++] = nearer == first ? first + 1 : first;
-                node = nearer;
-                continue;
-            }
-            if (entry_a >= 0.0f || entry_b >= 0.0f) {
-                node = entry_a >= 0.0f ? first : first + 1;
-                continue;
+        if (child & WF_BVH_LEAF) {
+            const uint32_t count = ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
+            for (uint32_t group = 0; group < count; group += 4u) { /* four triangles at a time */
+                const uint32_t first = (child & WF_BVH_FIRST_MASK) + group;
+                const uint32_t in_group = count - group < 4u ? count - group : 4u;
+                const TriangleLanes lanes = leaf_triangles(&ray, triangles, first, in_group);
+                TriangleHit hits[4];
+                uint32_t found = intersect_triangles(&ray, &lanes, t_max, selection.window_end, hits);
+                found &= (1u << in_group) - 1u; /* not the repeated lanes */
+                for (; found != 0u; found &= found - 1u) {
+                    const uint32_t lane = lowest_bit(found);
+                    const int32_t index = (int32_t)(first + lane);
+                    if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
+                    select_hit(&selection, &hits[lane], index, triangles[index].light >= 0);
+                    if (stop_at_first_hit) return selected_hit(&selection);
+                }
             }
         } else {
-            for (uint32_t i = first; i < first + count; ++i) {
-                TriangleHit candidate;
-                if (!intersect_triangle(&ray, load_float3(triangles[i].v0), load_float3(triangles[i].v1),
-                                        load_float3(triangles[i].v2), t_max, &candidate) ||
-                    !WF_HIT_PASSES(triangles, (int32_t)i, &candidate))
-                    continue;
-                select_hit(&selection, &candidate, (int32_t)i, triangles[i].light >= 0);
-                if (stop_at_first_hit) return selected_hit(&selection);
+            WF_GLOBAL const BvhNode* node = nodes + child;
+            float entry[WF_BVH_WIDTH];
+            uint32_t met = child_entries(&box, node, selection.window_end, entry);
+            if (met != 0u && (met & (met - 1u)) == 0u) { /* one child: no stack */
+                child = node->child[lowest_bit(met)];
+                continue;
+            }
+            /* Several: pushed in order of entry, the nearest on top, since
+             * hits there may cull the others; as they come for an any-hit
+             * query, which the first hit ends wherever it is. */
+            const int base = stack_size;
+            for (; met != 0u; met &= met - 1u) {
+                const uint32_t slot = lowest_bit(met);
+                int i = stack_size++;
+                for (; !stop_at_first_hit && i > base && stack_entry[i - 1] < entry[slot]; --i) {
+                    stack_entry[i] = stack_entry[i - 1];
+                    stack_child[i] = stack_child[i - 1];
+                }
+                stack_entry[i] = entry[slot];
+                stack_child[i] = node->child[slot];
+                prefetch_child(nodes, triangles, stack_child[i]);
             }
         }
-        if (stack_size == 0) return selected_hit(&selection);
-        node = stack[--stack_size];
+        /* The next pending child, unless the window's end has moved below
+         * where it enters its box since it was pushed: its box test would now
+         * fail, since the limit scales as the test's own exit does. */
+        do {
+            if (stack_size == 0) return selected_hit(&selection);
+            --stack_size;
+        } while (stack_entry[stack_size] > selection.window_end * (1.0f + 0x1p-21f));
+        child = stack_child[stack_size];
     }
 }
 
