@@ -10,7 +10,7 @@
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
-#include "ray_batch.h"
+#include "integrator/ray_batch.h"
 
 namespace wf::bench {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "embree_tracer.h"
-#include "ray_batch.h"
+#include "integrator/ray_batch.h"
 
 namespace wf::bench {
 

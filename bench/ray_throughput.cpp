@@ -26,19 +26,19 @@
 #include <utility>
 #include <vector>
 
-#include "bvh_builder.h"
-#include "camera.h"
-#include "device_scene.h"
+#include "bvh/bvh_builder.h"
+#include "scene/camera.h"
+#include "device/device_scene.h"
 #include "embree_tracer.h"
-#include "errors.h"
-#include "exit_status.h"
-#include "gltf_loader.h"
+#include "base/errors.h"
+#include "cli/exit_status.h"
+#include "gltf/gltf_loader.h"
 #include "hit_agreement.h"
-#include "layout_check.h"
-#include "opencl_device.h"
-#include "ray_batch.h"
-#include "renderer.h"
-#include "scene_features.h"
+#include "device/layout_check.h"
+#include "device/opencl_device.h"
+#include "integrator/ray_batch.h"
+#include "render/renderer.h"
+#include "device/scene_features.h"
 #include "surface_rays.h"
 
 namespace wf::bench {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <random>
 
-#include "alias_table.h"
+#include "base/alias_table.h"
 #include "common/sampling.h"
 #include "geometry/ray_offset.h"
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "ray_batch.h"
-#include "scene.h"
+#include "integrator/ray_batch.h"
+#include "scene/scene.h"
 
 namespace wf::bench {
 

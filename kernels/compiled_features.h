@@ -1,5 +1,5 @@
 /* compiled_features.h — the scene features the program is compiled for. The host sets
- * each with -D from the scene (host/scene_features.h); a build without them,
+ * each with -D from the scene (host/device/scene_features.h); a build without them,
  * such as the tests' own small programs, has every feature on. */
 #ifndef WF_COMPILED_FEATURES_H
 #define WF_COMPILED_FEATURES_H

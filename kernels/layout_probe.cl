@@ -1,6 +1,6 @@
 /* layout_probe.cl — reports the device compiler's sizes and offsets of the
  * shared structs, in the order of include/wavefront/layout_fields.h, for the
- * host to compare with its own (host/layout_check.cpp). */
+ * host to compare with its own (host/device/layout_check.cpp). */
 #include "wavefront/scene_types.h"
 #include "wavefront/path_state.h"
 #include "wavefront/layout_fields.h"

@@ -4,7 +4,7 @@
  * Every stage kernel starts its parameter list with WF_STAGE_PARAMS: one
  * __global pointer per path-state field (in declaration order), then the render
  * constants, the queues and the counters. The host sets the same arguments in
- * the same order (host/path_pool.cpp). WF_BIND_PATH_STATE gathers the field
+ * the same order (host/integrator/path_pool.cpp). WF_BIND_PATH_STATE gathers the field
  * pointers into one PathState so stage functions take a single argument. */
 #ifndef WF_KERNEL_PATH_STATE_H
 #define WF_KERNEL_PATH_STATE_H

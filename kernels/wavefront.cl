@@ -3,7 +3,7 @@
  *   generate → intersect → shade → intersect_shadow → roulette → accumulate
  *
  * Each stage reads one queue of path slots and appends to others
- * (include/wavefront/path_state.h); host/wavefront_scheduler.cpp launches them. */
+ * (include/wavefront/path_state.h); host/integrator/wavefront_scheduler.cpp launches them. */
 #include "stages/generate.cl"
 #include "stages/intersect.cl"
 #include "stages/sort_by_material.cl"

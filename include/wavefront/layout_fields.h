@@ -1,6 +1,6 @@
 /* layout_fields.h — the list of shared structs and members whose size and
  * offset the host compares with the device compiler's at start-up
- * (host/layout_check.cpp, kernels/layout_probe.cl). A struct added to
+ * (host/device/layout_check.cpp, kernels/layout_probe.cl). A struct added to
  * scene_types.h or path_state.h is added here too. */
 #ifndef WAVEFRONT_LAYOUT_FIELDS_H
 #define WAVEFRONT_LAYOUT_FIELDS_H

@@ -2,8 +2,8 @@
  * the queues, the statistics counters, and the path state of every slot.
  *
  * The path state is a structure of arrays declared once, by WF_PATH_STATE: the
- * host allocates one buffer per field (host/path_pool.cpp) and every stage
- * kernel takes them as one parameter list (kernels/path_state.cl) in this
+ * host allocates one buffer per field (host/integrator/path_pool.cpp) and every stage
+ * kernel takes them as one parameter list (kernels/path_state.h) in this
  * order, so host and device cannot disagree on what a slot holds. */
 #ifndef WAVEFRONT_PATH_STATE_H
 #define WAVEFRONT_PATH_STATE_H
@@ -51,7 +51,7 @@ typedef struct RenderParams {
 /* The queues: index buffers of path slots, one region of pool_size entries per
  * queue in one buffer, each with a counter in the counter buffer. A slot is in
  * one queue at a time, and each queue has one consumer, which takes it whole
- * before the host zeroes its counter (host/wavefront_scheduler.cpp); so the
+ * before the host zeroes its counter (host/integrator/wavefront_scheduler.cpp); so the
  * stages may run in any order, and one extension queue serves both generate
  * and roulette. The numbering lets the refill schedule clear the counters of
  * each phase with one fill: [EXTEND, REGENERATE] once shade has consumed them,

@@ -4,13 +4,13 @@
  * Layout rules (so OpenCL C and C++ agree without packing pragmas): only 4-byte
  * scalars and arrays of them, every struct a multiple of 16 bytes. The host
  * checks sizeof and offsetof of each against the device compiler at start-up
- * (host/layout_check.cpp), so a change here cannot silently drift. */
+ * (host/device/layout_check.cpp), so a change here cannot silently drift. */
 #ifndef WAVEFRONT_SCENE_TYPES_H
 #define WAVEFRONT_SCENE_TYPES_H
 
 #include "wavefront/compat.h"
 
-/* 8-wide BVH node (host/bvh_builder.h, kernels/geometry/bvh_traverse.h): the
+/* 8-wide BVH node (host/bvh/bvh_builder.h, kernels/geometry/bvh_traverse.h): the
  * boxes of up to eight children, one lane each, so that one ray meets all
  * eight with float8 arithmetic. bounds rows: lower x, upper x, lower y, upper
  * y, lower z, upper z. An unused slot has an empty box (lower +inf, upper
@@ -125,7 +125,7 @@ typedef struct TextureRef {
 /* Per material, beside its TextureRefs: what modulates the sampled values. */
 typedef struct MaterialTextureParams {
     float normal_scale;    /* glTF normalTexture.scale: scales the normal's x and y */
-    uint32_t alpha_mode;   /* WF_ALPHA_*; glTF BLEND is loaded as MASK (host/gltf_textures.cpp) */
+    uint32_t alpha_mode;   /* WF_ALPHA_*; glTF BLEND is loaded as MASK (host/gltf/gltf_textures.cpp) */
     float alpha_cutoff;    /* for WF_ALPHA_MASK */
     float base_alpha;      /* baseColorFactor's alpha, times the texture's */
 } MaterialTextureParams;
@@ -162,7 +162,7 @@ typedef struct Camera {
 
 /* Light from infinitely far away (kernels/lights/environment.h). A map of
  * width x height equirectangular texels, or with WF_ENVIRONMENT_CONSTANT a
- * constant radiance and no texels. Its two buffers (host/environment_map.h):
+ * constant radiance and no texels. Its two buffers (host/scene/environment_map.h):
  * texels, four floats per texel (RGB radiance before `scale`, then the
  * sampling density in solid angle), and the sampling distribution's CDFs. */
 typedef struct Environment {

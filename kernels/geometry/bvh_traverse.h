@@ -1,5 +1,5 @@
 /* bvh_traverse.h — closest-hit and any-hit queries of a ray against the BVH
- * built by host/bvh_builder.h, shared by the kernels and the host.
+ * built by host/bvh/bvh_builder.h, shared by the kernels and the host.
  *
  * Promises: bvh_closest_hit returns what testing every triangle with
  * intersect_triangle (geometry/triangle_intersect.h) and passing each hit to
@@ -17,7 +17,7 @@
  * emitter hit (Triangle.light >= 0) inside it wins over the closest hit. So a
  * light exactly coplanar with the surface it is set in is found wherever its
  * bound is no larger than the surface's, and in practice everywhere, since the
- * bounds are conservative several times over (tests/test_coplanar.cpp checks
+ * bounds are conservative several times over (tests/render/test_coplanar.cpp checks
  * every pixel); the two no longer take turns from pixel to pixel as their
  * roundings fall. The emitter wins, not the surface, because next-event
  * estimation reaches it (its shadow segment stops short of that plane), and
@@ -50,7 +50,7 @@
  *    would make every slab the whole line, so every box is met outright
  *    (child_entries), as it would be then.
  *
- * Layout (include/wavefront/scene_types.h, host/bvh_builder.h): nodes are 8
+ * Layout (include/wavefront/scene_types.h, host/bvh/bvh_builder.h): nodes are 8
  * wide, and one visit tests the ray against all eight child boxes at once in
  * float8 lanes: one vload8 per plane row, with the planes the ray enters by
  * chosen per axis once per ray (as min and max of the two distances would
@@ -69,7 +69,7 @@
  * the box test itself would now fail (its exit is scaled by the same
  * 1 + 2^-21), so nothing is culled that the test would keep. The stack holds
  * WF_BVH_STACK_SIZE children; the builder gives every subtree no more than
- * the room left to it (host/bvh_builder.cpp says how).
+ * the room left to it (host/bvh/bvh_builder.cpp says how).
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the

@@ -1,5 +1,5 @@
 /* choose_light.h — next-event estimation over every light in the scene: one
- * entry of the alias table, chosen by power (host/device_scene.cpp), then a
+ * entry of the alias table, chosen by power (host/device/device_scene.cpp), then a
  * sample of that light by its kind. The returned pdf includes the choice. */
 #ifndef WF_CHOOSE_LIGHT_H
 #define WF_CHOOSE_LIGHT_H

@@ -1,6 +1,6 @@
 /* environment.h — light from infinitely far away: an equirectangular map
  * importance-sampled by luminance, or a constant radiance; shared by the
- * kernels and the host (host/environment_map.h builds the buffers).
+ * kernels and the host (host/scene/environment_map.h builds the buffers).
  *
  * Mapping (map frame, +y up as in glTF): texel (col, row) covers
  *   phi   in 2pi [col, col + 1) / width  - pi,   theta in pi [row, row + 1) / height,

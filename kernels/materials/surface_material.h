@@ -23,7 +23,7 @@ typedef struct SceneTextures {
 } SceneTextures;
 
 /* The texture buffers as kernel parameters, in the order the host sets them
- * (host/wavefront_scheduler.cpp), and gathered into one SceneTextures. */
+ * (host/integrator/wavefront_scheduler.cpp), and gathered into one SceneTextures. */
 #define WF_SCENE_TEXTURE_PARAMS                                                                              \
     __global const TextureInfo *texture_infos, __global const uint *texels,                                  \
         __global const TextureRef *texture_refs, __global const MaterialTextureParams *material_textures,    \

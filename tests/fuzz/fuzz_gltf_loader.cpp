@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "bvh_builder.h"
-#include "device_scene.h"
-#include "environment_map.h"
-#include "errors.h"
-#include "gltf_loader.h"
+#include "bvh/bvh_builder.h"
+#include "device/device_scene.h"
+#include "scene/environment_map.h"
+#include "base/errors.h"
+#include "gltf/gltf_loader.h"
 
 namespace {
 

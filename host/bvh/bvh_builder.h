@@ -1,0 +1,33 @@
+// bvh_builder.h — the bounding volume hierarchy over a scene's triangles, in
+// the layout the kernels traverse (kernels/geometry/bvh_traverse.h,
+// include/wavefront/scene_types.h): the binned-SAH binary tree of
+// host/bvh/binary_bvh.h collapsed into 8-wide nodes.
+//
+// Promises: node 0 has one slot, the scene's box over the top of the tree;
+// every other node is the child of exactly one node before it; every triangle
+// in exactly one leaf, a run of one to eight consecutive BVH positions; every
+// child box holding its children's boxes and its triangles' corners, and every
+// unused slot's box empty, its child word 0; traversal's stack never fuller
+// than WF_BVH_STACK_SIZE. Deterministic.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "wavefront/scene_types.h"
+
+namespace wf {
+
+struct Bvh {
+    std::vector<BvhNode> nodes;  // node 0 holds the scene's box over the top of the tree
+    std::vector<uint32_t> order; // order[i] = index of the scene triangle placed at BVH position i
+    int depth = 0;               // deepest level of nodes (root = 1)
+};
+
+// positions: three corners per triangle (world space); throws as
+// build_binary_bvh (host/bvh/binary_bvh.h) does.
+Bvh build_bvh(const std::vector<glm::vec3>& positions);
+
+} // namespace wf

@@ -1,0 +1,55 @@
+// cli.h — the command line: `wavefront render SCENE [flags]`, `wavefront
+// devices`, `--help`, `--version`. Every flag value is checked here; a bad one
+// is an InputError that names the flag and the value.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/progressive_render.h"
+#include "integrator/path_integrator.h"
+
+namespace wf {
+
+struct RenderOptions {
+    std::string scene;
+    std::string output = "render.png";
+    uint32_t width = 0;  // 0: from the camera's aspect
+    uint32_t height = 0;
+    int camera = -1;     // -1: the file's first perspective camera
+    std::string device;  // empty: the first GPU, else the first device
+    std::string cache_dir;          // --cache-dir; empty: the default (program_cache.h)
+    std::string environment;        // an equirectangular map; empty: none
+    float environment_rotate = 0.0f; // degrees about +y
+    float environment_scale = 1.0f;
+    float environment_uniform = 0.0f; // > 0: a constant environment of this radiance instead
+    RenderSettings settings;
+    ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
+    std::string reference;    // an image to report the error against
+    std::string report_csv;   // where to write the checkpoints as CSV
+    std::string stats_json;   // where to write the render's statistics (render_stats_json.h)
+    double checkpoint_every = 0.0; // seconds between partial renders written to OUT.partial.exr; 0: none
+    std::string resume;            // a partial render to go on from
+    bool quiet = false;            // no progress line
+};
+
+// `wavefront cache warm|clear`.
+struct CacheOptions {
+    std::string directory;           // --cache-dir, else the default (program_cache.h)
+    std::string device;              // for warm
+    std::vector<std::string> scenes; // for warm
+};
+
+enum class Command { Render, Devices, Help, Version, CacheWarm, CacheClear };
+
+struct CommandLine {
+    Command command = Command::Help;
+    RenderOptions render;
+    CacheOptions cache;
+    std::string help; // the text to print for Command::Help
+};
+
+CommandLine parse_command_line(int argc, const char** argv);
+
+} // namespace wf

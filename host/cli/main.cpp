@@ -1,0 +1,41 @@
+// main.cpp — `wavefront`: the command dispatch and the exit-code policy.
+//   0 success · 1 the machine failed (no OpenCL device, a kernel that will not
+//   build) · 2 the input is at fault (a scene, a flag, an output path) ·
+//   128 + signal: a render stopped by Ctrl-C or SIGTERM, its image written.
+// Every failure is one line on stderr that names the thing at fault.
+#include <iostream>
+
+#include "cli/cli.h"
+#include "cli/exit_status.h"
+#include "cli/render_command.h"
+
+int main(int argc, const char** argv) {
+    try {
+        const wf::CommandLine cl = wf::parse_command_line(argc, argv);
+        switch (cl.command) {
+        case wf::Command::Help:
+            if (!cl.help.empty()) std::cout << cl.help << "\n";
+            return 0;
+        case wf::Command::Version:
+            std::cout << "wavefront " << WF_VERSION << "\n";
+            return 0;
+        case wf::Command::Devices:
+            wf::print_devices(std::cout);
+            return 0;
+        case wf::Command::CacheWarm:
+            wf::warm_cache(cl.cache, std::cout);
+            return 0;
+        case wf::Command::CacheClear:
+            wf::clear_cache(cl.cache, std::cout);
+            return 0;
+        case wf::Command::Render: {
+            const wf::RenderSummary summary = wf::run_render(cl.render, std::cout, std::cerr);
+            wf::print_report(std::cout, summary);
+            return summary.interrupted_by ? 128 + summary.interrupted_by : 0; // as a shell reports a signal
+        }
+        }
+    } catch (...) {
+        return wf::report_exception();
+    }
+    return 1;
+}

@@ -1,0 +1,252 @@
+// render_command.cpp — a render from the command line: load, check, render in
+// rounds with a checkpoint table, write. Everything that can be rejected (the
+// scene, the reference, the output format) is rejected before rendering.
+#include "cli/render_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+
+#include <unistd.h>
+
+#include "scene/environment_map.h"
+#include "base/errors.h"
+#include "gltf/gltf_loader.h"
+#include "image/image_io.h"
+#include "cli/interrupt.h"
+#include "film/partial_render.h"
+#include "cli/progress_line.h"
+#include "device/program_cache.h"
+#include "render/progressive_render.h"
+#include "render/render_stats_json.h"
+#include "render/renderer.h"
+
+namespace wf {
+namespace {
+
+std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
+
+// One checkpoint as a table row and a CSV line; error columns stay empty
+// without a reference.
+class CheckpointLog {
+public:
+    CheckpointLog(std::ostream& table, const std::string& csv_path) : table_(table) {
+        if (!csv_path.empty()) {
+            csv_.open(csv_path);
+            if (!csv_) throw InputError(csv_path + ": cannot write the report");
+            csv_ << "seconds,spp,mse,relmse,mae,relmse_estimate\n";
+        }
+        table_ << "   seconds       spp          mse       relmse          mae   relmse est.\n";
+    }
+
+    void add(const Checkpoint& c) {
+        table_ << std::fixed << std::setprecision(3) << std::setw(10) << c.seconds << std::setw(10) << c.spp
+               << std::scientific << std::setprecision(4);
+        if (c.error)
+            table_ << std::setw(13) << c.error->mse << std::setw(13) << c.error->relmse << std::setw(13) << c.error->mae;
+        else
+            table_ << std::setw(39) << "";
+        if (c.relmse_estimate) table_ << std::setw(14) << *c.relmse_estimate;
+        table_ << std::defaultfloat << "\n" << std::flush;
+        if (!csv_.is_open()) return;
+        csv_ << std::setprecision(9) << c.seconds << "," << c.spp << ",";
+        if (c.error) csv_ << c.error->mse << "," << c.error->relmse << "," << c.error->mae;
+        else csv_ << ",,";
+        csv_ << ",";
+        if (c.relmse_estimate) csv_ << *c.relmse_estimate;
+        csv_ << "\n" << std::flush;
+    }
+
+private:
+    std::ostream& table_;
+    std::ofstream csv_;
+};
+
+// What shapes the image, for every output's metadata and for --resume to
+// check: a partial render continues only under the same values.
+ImageOptions image_options(const RenderOptions& o, ImageSize size, uint32_t pool_size) {
+    auto choice = [](uint32_t i, std::initializer_list<const char*> names) { return *(names.begin() + i); };
+    const RenderSettings& s = o.settings;
+    return {{"scene", o.scene},
+            {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
+            {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
+            {"seed", std::to_string(s.seed)},
+            {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
+            {"light-sampling", choice(s.light_sampling, {"bsdf", "nee", "mis"})},
+            {"hemisphere", choice(s.hemisphere, {"uniform", "cosine"})},
+            {"sampler", choice(s.sampler, {"independent", "sobol"})},
+            {"env", o.environment.empty() ? "none" : o.environment},
+            {"env-rotate", std::to_string(o.environment_rotate)},
+            {"env-scale", std::to_string(o.environment_scale)},
+            {"env-uniform", std::to_string(o.environment_uniform)},
+            {"aov", s.bounce_layers ? "bounces" : "none"},
+            {"pool-size", std::to_string(pool_size)},
+            {"version", WF_VERSION}};
+}
+
+std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
+    std::vector<ImageLayer> layers;
+    for (size_t i = 0; i < film.bounce_layers.size(); ++i) {
+        const bool last = i + 1 == film.bounce_layers.size();
+        layers.push_back({"bounce" + std::to_string(i) + (last ? "plus" : ""), film.bounce_layers[i]});
+    }
+    return layers;
+}
+
+} // namespace
+
+void print_devices(std::ostream& out) {
+    for (const DeviceInfo& d : list_devices())
+        out << "[" << d.index << "] " << d.name << "\n    type " << d.type << ", " << d.compute_units
+            << " compute units, " << mib(d.global_memory) << " global memory (" << mib(d.max_allocation)
+            << " per buffer)\n    platform " << d.platform << ", " << d.version << ", driver " << d.driver << "\n";
+}
+
+RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
+                          ImageSize size, const RenderSettings& settings) {
+    Renderer renderer(device, scene, camera, size, settings);
+    renderer.render_to(settings.spp);
+    return RenderOutput{renderer.read(), renderer.summary()};
+}
+
+std::string cache_directory(const std::string& requested) {
+    if (!requested.empty()) return requested;
+    const std::optional<std::filesystem::path> fallback = ProgramCache::default_directory();
+    return fallback ? fallback->string() : std::string();
+}
+
+RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
+    const auto start = std::chrono::steady_clock::now();
+    check_can_write(options.output);
+    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    if (!options.environment.empty()) {
+        auto map = std::make_shared<EnvironmentMap>(
+            load_environment(options.environment, options.environment_scale, options.environment_rotate));
+        for (const std::string& w : map->warnings) log << "warning: " << w << "\n"; // each names the file
+        scene.environment = std::move(map);
+    }
+    if (options.environment_uniform > 0.0f)
+        scene.environment = std::make_shared<EnvironmentMap>(constant_environment(options.environment_uniform));
+    light_unlit_scene(scene);
+    const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
+    if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
+
+    const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
+    std::string pool_note;
+    const uint32_t pool_size = choose_pool_size(options.settings.pool_size, size.width * size.height, &pool_note);
+    if (!pool_note.empty()) log << "note: " << pool_note << "\n";
+    const ImageOptions shaping = image_options(options, size, pool_size);
+    if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
+        throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
+    std::optional<PartialRender> resumed;
+    if (!options.resume.empty()) resumed = read_partial_render(options.resume, shaping);
+    if (options.settings.bounce_layers && !holds_float_radiance(options.output))
+        throw InputError(options.output + ": --aov layers need a float format such as .exr");
+    std::optional<Image> reference;
+    if (!options.reference.empty()) {
+        reference = read_image(options.reference);
+        if (reference->width != size.width || reference->height != size.height)
+            throw InputError(options.reference + ": the reference is " + std::to_string(reference->width) + "x" +
+                             std::to_string(reference->height) + " but the render is " + std::to_string(size.width) +
+                             "x" + std::to_string(size.height));
+    }
+
+    const OpenClDevice device = open_device(options.device);
+    RenderSettings settings = options.settings;
+    settings.cache_dir = cache_directory(options.cache_dir);
+    settings.stop = &install_interrupt_handlers();
+    // Compiling takes seconds on a cold cache: say so on a terminal, then erase the line.
+    const bool terminal = ::isatty(STDERR_FILENO);
+    if (terminal && !options.quiet)
+        log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
+    Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
+    if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
+    if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
+    ProgressOptions progress = options.progress;
+    progress.reference = reference ? &*reference : nullptr;
+    progress.stop = settings.stop;
+    if (resumed) progress.start_spp = renderer.resume(resumed->film);
+    if (options.checkpoint_every > 0.0 && progress.report_every == 0.0) progress.report_every = options.checkpoint_every;
+
+    ImageMetadata metadata;
+    metadata.device = device.info.name;
+    metadata.seed = options.settings.seed;
+    metadata.scene = options.scene;
+    metadata.options = shaping;
+    const uint64_t pixels = uint64_t{size.width} * size.height;
+    ProgressLine progress_line(log, terminal, 10.0,
+                               progress.max_spp ? pixels * (progress.max_spp - progress.start_spp) : 0,
+                               progress.time_budget);
+    if (!options.quiet) renderer.on_progress([&](const RenderStats& s) { progress_line.update(s); });
+    const std::string partial_path = partial_render_path(options.output);
+    bool partial_written = false;
+    auto write_partial = [&] {
+        metadata.samples_per_pixel = renderer.read().min_samples;
+        metadata.render_seconds = renderer.stats().seconds;
+        write_partial_render(partial_path, renderer.film_state(), metadata);
+        partial_written = true;
+    };
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    CheckpointLog checkpoints(out, options.report_csv);
+    const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
+        checkpoints.add(c);
+        if (c.relmse_estimate) progress_line.set_error(*c.relmse_estimate);
+        const auto now = std::chrono::steady_clock::now();
+        if (options.checkpoint_every > 0.0 &&
+            std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_every) {
+            write_partial();
+            last_checkpoint = now;
+        }
+    });
+    progress_line.finish();
+
+    RenderSummary summary = renderer.summary();
+    summary.interrupted_by = interrupt_signal();
+    metadata.samples_per_pixel = film.min_samples;
+    metadata.render_seconds = summary.stats.seconds;
+    metadata.interrupted = summary.interrupted_by != 0;
+    write_image(options.output, film.mean, metadata, bounce_layers(film));
+    if (summary.interrupted_by) {
+        write_partial();
+        log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and " << partial_path
+            << "; go on with --resume " << partial_path << "\n";
+    } else if (partial_written) {
+        std::error_code ignored; // stale now that the image is whole
+        std::filesystem::remove(partial_path, ignored);
+    }
+
+    summary.scene = options.scene;
+    summary.output = options.output;
+    summary.times.load = load_seconds;
+    if (!options.stats_json.empty()) write_stats_json(options.stats_json, summary);
+    return summary;
+}
+
+void warm_cache(const CacheOptions& options, std::ostream& out) {
+    const std::string directory = cache_directory(options.directory);
+    if (directory.empty()) throw InputError("cache warm: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
+    const OpenClDevice device = open_device(options.device);
+    RenderSettings settings;
+    settings.cache_dir = directory;
+    for (const std::string& path : options.scenes) {
+        Scene scene = load_gltf(path);
+        light_unlit_scene(scene);
+        std::string features;
+        const KernelProgram program = build_render_program(device, scene, settings, &features);
+        out << path << ": " << features << ": " << (program.from_cache ? "already cached" : "compiled") << " in "
+            << program.build_seconds << " s\n";
+    }
+    out << "cache: " << directory << "\n";
+}
+
+void clear_cache(const CacheOptions& options, std::ostream& out) {
+    const std::string directory = cache_directory(options.directory);
+    if (directory.empty()) throw InputError("cache clear: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
+    out << "removed " << ProgramCache(directory).clear() << " compiled programs from " << directory << "\n";
+}
+
+} // namespace wf

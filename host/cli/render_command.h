@@ -1,0 +1,41 @@
+// render_command.h — `wavefront render` and `wavefront devices`, and the
+// one-call render the tests use.
+#pragma once
+
+#include <iosfwd>
+
+#include "scene/camera.h"
+#include "cli/cli.h"
+#include "film/film.h"
+#include "device/opencl_device.h"
+#include "render/render_report.h"
+#include "scene/scene.h"
+
+namespace wf {
+
+struct RenderOutput {
+    FilmReadout film;
+    RenderSummary summary;
+};
+
+// Renders `settings.spp` samples per pixel in one round: what the tests use.
+RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
+                          ImageSize size, const RenderSettings& settings);
+
+// Runs one render as the options say: checkpoints as a table on `out` (and in
+// the CSV file), notes on `log`, the image written, and the summary returned.
+RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log);
+
+// `wavefront devices`: every OpenCL device with its index.
+void print_devices(std::ostream& out);
+
+// The program cache's directory: `requested`, else the default; empty with neither.
+std::string cache_directory(const std::string& requested);
+
+// `wavefront cache warm`: compiles the kernels each scene needs into the cache.
+void warm_cache(const CacheOptions& options, std::ostream& out);
+
+// `wavefront cache clear`.
+void clear_cache(const CacheOptions& options, std::ostream& out);
+
+} // namespace wf

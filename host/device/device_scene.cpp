@@ -1,0 +1,169 @@
+// device_scene.cpp — reorders the loaded triangles into BVH order and builds
+// the light table: each emissive triangle is weighted by its power,
+// π · area · mean(Le), doubled when it emits from both faces.
+#include "device/device_scene.h"
+
+#include "device/device_buffer.h"
+
+#include <algorithm>
+
+#include "base/alias_table.h"
+
+namespace wf {
+namespace {
+
+void store3(float* out, const glm::vec3& v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+double triangle_power(const Scene& scene, uint32_t t) {
+    const SceneMaterial& m = scene.materials[scene.triangle_material[t]];
+    const glm::dvec3 a(scene.positions[3 * t]), b(scene.positions[3 * t + 1]), c(scene.positions[3 * t + 2]);
+    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+    const double radiance = (double(m.emission.x) + m.emission.y + m.emission.z) / 3.0;
+    return 3.14159265358979323846 * area * radiance * (m.double_sided ? 2.0 : 1.0);
+}
+
+double mean3(const float* v) { return (double(v[0]) + v[1] + v[2]) / 3.0; }
+
+// The power that light choice is proportional to (pbrt-v4's PowerLightSampler):
+// lights far away or at infinity deliver theirs through a disk of the scene's
+// radius.
+double punctual_power(const PunctualLight& light, double scene_radius) {
+    constexpr double pi = 3.14159265358979323846;
+    const double intensity = mean3(light.intensity);
+    if (light.type == WF_PUNCTUAL_DIRECTIONAL) return pi * scene_radius * scene_radius * intensity;
+    if (light.type == WF_PUNCTUAL_SPOT)
+        return 2.0 * pi * (1.0 - 0.5 * (double(light.cos_inner) + light.cos_outer)) * intensity;
+    return 4.0 * pi * intensity;
+}
+
+double environment_power(const EnvironmentMap& map, double scene_radius) {
+    constexpr double pi = 3.14159265358979323846;
+    const Environment& e = map.header;
+    double radiance_integral = 0.0; // of mean radiance over the sphere, W m^-2
+    if (e.flags & WF_ENVIRONMENT_CONSTANT) {
+        radiance_integral = 4.0 * pi * mean3(e.scale);
+    } else {
+        for (uint32_t row = 0; row < e.height; ++row) {
+            const double solid_angle = (2.0 * pi / e.width) * (std::cos(pi * row / e.height) -
+                                                               std::cos(pi * (row + 1) / e.height));
+            for (uint32_t col = 0; col < e.width; ++col) {
+                const float* t = &map.texels[4 * (size_t{row} * e.width + col)];
+                radiance_integral += solid_angle * (double(t[0]) * e.scale[0] + double(t[1]) * e.scale[1] +
+                                                    double(t[2]) * e.scale[2]) / 3.0;
+            }
+        }
+    }
+    return pi * scene_radius * scene_radius * radiance_integral;
+}
+
+} // namespace
+
+DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
+    DeviceSceneData d;
+    d.nodes = bvh.nodes;
+    const size_t n = bvh.order.size();
+    d.triangles.resize(n);
+    d.normals.resize(n);
+    std::vector<double> light_weights;
+    const auto add_light = [&](uint32_t kind, uint32_t index, double power) {
+        d.lights.push_back(LightEntry{0.0f, 0u, index, 0.0f, kind, {0u, 0u, 0u}});
+        light_weights.push_back(power);
+        d.emitted_power += power;
+    };
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t t = bvh.order[i];
+        Triangle& tri = d.triangles[i];
+        store3(tri.v0, scene.positions[3 * t]);
+        store3(tri.v1, scene.positions[3 * t + 1]);
+        store3(tri.v2, scene.positions[3 * t + 2]);
+        tri.material = scene.triangle_material[t];
+        tri.mesh = scene.triangle_mesh[t];
+        tri.light = -1;
+        TriangleNormals& nrm = d.normals[i];
+        nrm = TriangleNormals{};
+        store3(nrm.n0, scene.normals[3 * t]);
+        store3(nrm.n1, scene.normals[3 * t + 1]);
+        store3(nrm.n2, scene.normals[3 * t + 2]);
+        const double power = triangle_power(scene, t);
+        if (power > 0.0) {
+            tri.light = static_cast<int32_t>(d.lights.size());
+            add_light(WF_LIGHT_TRIANGLE, static_cast<uint32_t>(i), power);
+        }
+    }
+    d.emissive_triangles = static_cast<uint32_t>(d.lights.size());
+    d.textures = make_device_texture_data(scene, bvh.order);
+    const Bounds bounds = scene.bounds();
+    d.scene_diameter = bounds.empty() ? 0.0f : glm::length(bounds.extent());
+    const double radius = 0.5 * d.scene_diameter;
+    d.punctual = scene.punctual_lights;
+    for (size_t i = 0; i < d.punctual.size(); ++i)
+        if (const double power = punctual_power(d.punctual[i], radius); power > 0.0)
+            add_light(WF_LIGHT_PUNCTUAL, static_cast<uint32_t>(i), power);
+    d.environment = scene.environment;
+    if (d.environment)
+        if (const double power = environment_power(*d.environment, radius); power > 0.0) {
+            d.environment_light = static_cast<uint32_t>(d.lights.size());
+            add_light(WF_LIGHT_ENVIRONMENT, 0u, power);
+        }
+    if (!light_weights.empty()) {
+        const std::vector<AliasEntry> table = build_alias_table(light_weights);
+        for (size_t i = 0; i < table.size(); ++i) {
+            d.lights[i].probability = table[i].probability;
+            d.lights[i].alias = table[i].alias;
+            d.lights[i].pmf = table[i].pmf;
+        }
+    }
+    for (const SceneMaterial& m : scene.materials) {
+        Material dm{};
+        store3(dm.base_color, glm::clamp(m.base_color, 0.0f, 1.0f));
+        dm.metallic = m.metallic;
+        dm.roughness = m.roughness;
+        dm.transmission = m.transmission;
+        dm.ior = m.ior;
+        dm.specular = m.specular;
+        store3(dm.emission, m.emission);
+        dm.flags = m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
+        d.materials.push_back(dm);
+    }
+    return d;
+}
+
+size_t DeviceSceneData::bytes() const {
+    return nodes.size() * sizeof(BvhNode) + triangles.size() * sizeof(Triangle) +
+           normals.size() * sizeof(TriangleNormals) + materials.size() * sizeof(Material) +
+           lights.size() * sizeof(LightEntry) + punctual.size() * sizeof(PunctualLight) +
+           (environment ? (environment->texels.size() + environment->distribution.size()) * sizeof(float) : 0) +
+           textures.bytes();
+}
+
+size_t DeviceSceneData::largest_buffer_bytes() const {
+    return std::max({nodes.size() * sizeof(BvhNode), triangles.size() * sizeof(Triangle),
+                     normals.size() * sizeof(TriangleNormals), materials.size() * sizeof(Material),
+                     lights.size() * sizeof(LightEntry),
+                     environment ? environment->texels.size() * sizeof(float) : size_t{0},
+                     textures.texels.size() * sizeof(uint32_t)});
+}
+
+DeviceScene upload_scene(const cl::Context& context, const DeviceSceneData& data) {
+    DeviceScene s;
+    s.nodes = upload_read_only(context, data.nodes, s.bytes);
+    s.triangles = upload_read_only(context, data.triangles, s.bytes);
+    s.normals = upload_read_only(context, data.normals, s.bytes);
+    s.materials = upload_read_only(context, data.materials, s.bytes);
+    s.lights = upload_read_only(context, data.lights, s.bytes);
+    s.punctual = upload_read_only(context, data.punctual, s.bytes);
+    s.environment = upload_environment(context, data.environment ? *data.environment : constant_environment(0.0f));
+    s.bytes += s.environment.bytes;
+    s.textures = upload_textures(context, data.textures);
+    s.bytes += s.textures.bytes;
+    s.light_count = static_cast<uint32_t>(data.lights.size());
+    s.environment_light = data.environment_light;
+    s.scene_diameter = data.scene_diameter;
+    return s;
+}
+
+} // namespace wf

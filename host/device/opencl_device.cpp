@@ -1,0 +1,92 @@
+// opencl_device.cpp — platform and device enumeration through the ICD loader.
+#include "device/opencl_device.h"
+
+#include <cctype>
+
+#include "base/errors.h"
+
+namespace wf {
+namespace {
+
+std::string device_type_name(cl_device_type type) {
+    if (type & CL_DEVICE_TYPE_GPU) return "gpu";
+    if (type & CL_DEVICE_TYPE_CPU) return "cpu";
+    if (type & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+    return "other";
+}
+
+bool is_index(const std::string& s) {
+    if (s.empty()) return false;
+    for (char c : s)
+        if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+    return true;
+}
+
+} // namespace
+
+std::vector<DeviceInfo> list_devices() {
+    std::vector<cl::Platform> platforms;
+    try {
+        cl::Platform::get(&platforms);
+    } catch (const cl::Error&) {
+        // The ICD loader reports "no platform" as CL_PLATFORM_NOT_FOUND_KHR.
+    }
+    if (platforms.empty())
+        throw DeviceError("no OpenCL platform found: install an OpenCL driver, e.g. "
+                          "`apt-get install pocl-opencl-icd` for the CPU");
+    std::vector<DeviceInfo> result;
+    for (const cl::Platform& platform : platforms) {
+        std::vector<cl::Device> devices;
+        try {
+            platform.getDevices(CL_DEVICE_TYPE_ALL, &devices);
+        } catch (const cl::Error&) {
+            continue; // a platform with no devices
+        }
+        for (const cl::Device& d : devices) {
+            DeviceInfo info;
+            info.index = static_cast<int>(result.size());
+            info.platform = platform.getInfo<CL_PLATFORM_NAME>();
+            info.name = d.getInfo<CL_DEVICE_NAME>();
+            info.type = device_type_name(d.getInfo<CL_DEVICE_TYPE>());
+            info.version = d.getInfo<CL_DEVICE_VERSION>();
+            info.driver = d.getInfo<CL_DRIVER_VERSION>();
+            info.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+            info.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+            info.max_allocation = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+            info.device = d;
+            result.push_back(info);
+        }
+    }
+    if (result.empty())
+        throw DeviceError("OpenCL platforms found, but no device: check the driver installation");
+    return result;
+}
+
+DeviceInfo choose_device(const std::string& spec) {
+    const std::vector<DeviceInfo> devices = list_devices();
+    if (spec.empty()) {
+        for (const DeviceInfo& d : devices)
+            if (d.type == "gpu") return d;
+        return devices.front();
+    }
+    if (is_index(spec)) {
+        const size_t i = std::stoul(spec);
+        if (i < devices.size()) return devices[i];
+        throw InputError("--device " + spec + ": no such device (there are " +
+                         std::to_string(devices.size()) + "; see `wavefront devices`)");
+    }
+    for (const DeviceInfo& d : devices)
+        if (d.type == spec) return d;
+    throw InputError("--device " + spec + ": no device of that type (expected an index, cpu or gpu; "
+                     "see `wavefront devices`)");
+}
+
+OpenClDevice open_device(const std::string& spec) {
+    OpenClDevice d;
+    d.info = choose_device(spec);
+    d.context = cl::Context(d.info.device);
+    d.queue = cl::CommandQueue(d.context, d.info.device, CL_QUEUE_PROFILING_ENABLE);
+    return d;
+}
+
+} // namespace wf

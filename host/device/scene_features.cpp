@@ -1,0 +1,55 @@
+// scene_features.cpp — what a scene uses, from its materials and lights.
+#include "device/scene_features.h"
+
+#include <utility>
+#include <vector>
+
+#include "scene/environment_map.h"
+
+namespace wf {
+namespace {
+
+// Each feature with its define's name and its name in the report.
+std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const SceneFeatures& f) {
+    return {{f.textures, {"WF_HAS_TEXTURES", "textures"}},
+            {f.normal_maps, {"WF_HAS_NORMAL_MAPS", "normal maps"}},
+            {f.alpha_mask, {"WF_HAS_ALPHA_MASK", "alpha mask"}},
+            {f.emissive_triangles, {"WF_HAS_EMISSIVE_TRIANGLES", "emissive triangles"}},
+            {f.punctual_lights, {"WF_HAS_PUNCTUAL_LIGHTS", "punctual lights"}},
+            {f.environment, {"WF_HAS_ENVIRONMENT", "environment"}}};
+}
+
+} // namespace
+
+SceneFeatures scene_features(const Scene& scene) {
+    SceneFeatures f;
+    f.textures = f.normal_maps = f.alpha_mask = f.emissive_triangles = false;
+    for (const SceneMaterial& m : scene.materials) {
+        for (const TextureRef& ref : m.textures) f.textures = f.textures || ref.texture >= 0;
+        f.normal_maps = f.normal_maps || m.textures[WF_TEXTURE_NORMAL].texture >= 0;
+        f.alpha_mask = f.alpha_mask || m.alpha_mode == WF_ALPHA_MASK;
+    }
+    for (uint32_t material : scene.triangle_material) {
+        const glm::vec3& e = scene.materials[material].emission;
+        f.emissive_triangles = f.emissive_triangles || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
+    }
+    f.punctual_lights = !scene.punctual_lights.empty();
+    f.environment = scene.environment != nullptr;
+    return f;
+}
+
+std::string feature_defines(const SceneFeatures& features) {
+    std::string options;
+    for (const auto& [on, names] : listed(features))
+        options += std::string(options.empty() ? "" : " ") + "-D" + names.first + "=" + (on ? "1" : "0");
+    return options;
+}
+
+std::string describe_features(const SceneFeatures& features) {
+    std::string text;
+    for (const auto& [on, names] : listed(features))
+        if (on) text += (text.empty() ? "" : ", ") + std::string(names.second);
+    return text.empty() ? "none" : text;
+}
+
+} // namespace wf

@@ -1,0 +1,36 @@
+// scene_features.h — the coarse features a scene uses, which decide what the
+// kernels are compiled with (issue 6: leave out what a scene does not need).
+// Each is a -D define of the program: code for an absent feature is not
+// compiled, and what it would have returned (a texture of 1, an unbent
+// normal, a hit that passes, a light kind never chosen) is exactly what the
+// generic program computes for such a scene, so the images are bit-identical.
+// Kept coarse on purpose: a handful of switches, not a define per parameter.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace wf {
+
+struct SceneFeatures {
+    bool textures = true;           // any material reads a texture
+    bool normal_maps = true;        // any material has a normal map
+    bool alpha_mask = true;         // any material is alpha-masked
+    bool emissive_triangles = true; // any triangle emits
+    bool punctual_lights = true;    // KHR_lights_punctual
+    bool environment = true;        // an environment light
+
+    // Every feature on: the generic program, for --no-specialize.
+    static SceneFeatures all() { return SceneFeatures{}; }
+};
+
+SceneFeatures scene_features(const Scene& scene);
+
+// The program's build options: -DWF_HAS_<FEATURE>=0|1 for each.
+std::string feature_defines(const SceneFeatures& features);
+
+// "textures, normal maps, ..." or "none".
+std::string describe_features(const SceneFeatures& features);
+
+} // namespace wf

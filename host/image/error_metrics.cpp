@@ -1,0 +1,42 @@
+// error_metrics.cpp — sums in double over every pixel and channel.
+#include "image/error_metrics.h"
+
+#include <cmath>
+#include <string>
+
+#include "base/errors.h"
+
+namespace wf {
+namespace {
+constexpr double kRelativeEpsilon = 0.01;
+}
+
+ErrorMetrics compare_images(const Image& image, const Image& reference) {
+    if (image.width != reference.width || image.height != reference.height)
+        throw InputError("the reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+                         " but the render is " + std::to_string(image.width) + "x" + std::to_string(image.height));
+    ErrorMetrics e;
+    const size_t n = image.rgb.size();
+    for (size_t i = 0; i < n; ++i) {
+        const double x = image.rgb[i], y = reference.rgb[i], d = x - y;
+        e.mse += d * d;
+        e.relmse += d * d / (y * y + kRelativeEpsilon);
+        e.mae += std::fabs(d);
+    }
+    e.mse /= n;
+    e.relmse /= n;
+    e.mae /= n;
+    return e;
+}
+
+double estimate_relmse(const Image& mean, const Image& variance_of_mean) {
+    double sum = 0.0;
+    const size_t n = mean.rgb.size();
+    for (size_t i = 0; i < n; ++i) {
+        const double x = mean.rgb[i];
+        sum += variance_of_mean.rgb[i] / (x * x + kRelativeEpsilon);
+    }
+    return sum / n;
+}
+
+} // namespace wf

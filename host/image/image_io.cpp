@@ -1,0 +1,128 @@
+// image_io.cpp — linear radiance goes to float formats unchanged; 8-bit
+// formats get the sRGB curve applied here, since OIIO's type conversion alone
+// would quantise linear values.
+#include "image/image_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "base/errors.h"
+
+namespace wf {
+
+float srgb_encode(float linear) {
+    const float x = std::clamp(std::isnan(linear) ? 0.0f : linear, 0.0f, 1.0f);
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+namespace {
+// Formats that keep radiance as floats; everything else is display-referred 8-bit.
+bool stores_linear_float(const std::string& format) {
+    return format == "openexr" || format == "hdr" || format == "tiff";
+}
+} // namespace
+
+void check_can_write(const std::string& path) {
+    if (!OIIO::ImageOutput::create(path))
+        throw InputError(path + ": no image format for this extension (" + OIIO::geterror() + ")");
+    const std::filesystem::path target(path);
+    const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) throw InputError(path + ": no such folder " + folder.string());
+    const std::filesystem::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
+    if (!std::ofstream(probe)) throw InputError(path + ": cannot write in " + folder.string());
+    std::filesystem::remove(probe, ec);
+}
+
+bool holds_float_radiance(const std::string& path) {
+    auto out = OIIO::ImageOutput::create(path);
+    return out && stores_linear_float(out->format_name());
+}
+
+Image read_image(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.nchannels < 3) throw InputError(path + ": has " + std::to_string(spec.nchannels) + " channels, not RGB");
+    Image image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}};
+    image.rgb.resize(size_t{image.width} * image.height * 3);
+    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+        throw InputError(path + ": cannot read (" + in->geterror() + ")");
+    return image;
+}
+
+void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata,
+                 const std::vector<ImageLayer>& layers) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw InputError(path + ": no image format for this extension (" + OIIO::geterror() + ")");
+    const bool float_format = stores_linear_float(out->format_name());
+    if (!layers.empty() && !float_format)
+        throw InputError(path + ": image layers need a float format such as .exr");
+    const int channels = 3 * static_cast<int>(1 + layers.size());
+    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels,
+                         float_format ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    spec.channelnames = {"R", "G", "B"};
+    for (const ImageLayer& l : layers)
+        for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.name + "." + c);
+    spec.attribute("oiio:ColorSpace", float_format ? "Linear" : "sRGB");
+    spec.attribute("Software", "wavefront " WF_VERSION);
+    spec.attribute("wavefront:samplesPerPixel", static_cast<int>(metadata.samples_per_pixel));
+    spec.attribute("wavefront:renderTimeSeconds", static_cast<float>(metadata.render_seconds));
+    spec.attribute("wavefront:device", metadata.device);
+    spec.attribute("wavefront:seed", static_cast<int>(metadata.seed));
+    spec.attribute("wavefront:scene", metadata.scene);
+    spec.attribute("wavefront:interrupted", metadata.interrupted ? 1 : 0);
+    for (const auto& [name, value] : metadata.options) spec.attribute("wavefront:option:" + name, value);
+
+    // Interleaved: RGB, then each layer's RGB, pixel by pixel.
+    const size_t count = size_t{image.width} * image.height;
+    std::vector<float> pixels(count * channels);
+    for (size_t p = 0; p < count; ++p)
+        for (int c = 0; c < channels; ++c) {
+            const Image& source = c < 3 ? image : layers[c / 3 - 1].image;
+            pixels[p * channels + c] = source.rgb[3 * p + c % 3];
+        }
+    if (!float_format)
+        for (float& v : pixels) v = srgb_encode(v);
+    // Beside the target, with its extension (OIIO picks the format by it), then renamed over it.
+    const std::filesystem::path target(path);
+    const std::filesystem::path temporary =
+        target.parent_path() / ("." + target.stem().string() + ".writing-" + std::to_string(::getpid()) +
+                                target.extension().string());
+    if (!out->open(temporary.string(), spec)) throw InputError(path + ": cannot write (" + out->geterror() + ")");
+    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+    const bool closed = out->close();
+    std::error_code error;
+    if (written && closed) std::filesystem::rename(temporary, target, error);
+    if (!written || !closed || error) {
+        std::filesystem::remove(temporary, error);
+        throw InputError(path + ": write failed (" + (written && closed ? "cannot rename the written file" : out->geterror()) + ")");
+    }
+}
+
+ChannelImage read_channels(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    ChannelImage image;
+    image.width = static_cast<uint32_t>(spec.width);
+    image.height = static_cast<uint32_t>(spec.height);
+    image.channel_names = spec.channelnames;
+    image.pixels.resize(size_t{image.width} * image.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        throw InputError(path + ": cannot read (" + in->geterror() + ")");
+    const std::string prefix = "wavefront:option:";
+    for (const OIIO::ParamValue& p : spec.extra_attribs)
+        if (p.name().string().rfind(prefix, 0) == 0)
+            image.options.emplace_back(p.name().string().substr(prefix.size()), p.get_string());
+    return image;
+}
+
+} // namespace wf

@@ -1,0 +1,155 @@
+// path_integrator.cpp — launches, counters and profiling, for both integrators.
+#include "integrator/path_integrator.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "base/errors.h"
+
+namespace wf {
+namespace {
+
+constexpr const char* kStageNames[STAGE_COUNT] = {"generate",   "intersect",        "shade",     "intersect_shadow",
+                                                  "roulette",   "accumulate",       "sort_by_material",
+                                                  "megakernel"};
+constexpr uint32_t kDefaultPoolSize = 1u << 18;
+
+double event_seconds(const cl::Event& e) {
+    const cl_ulong start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();
+    const cl_ulong end = e.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+    return 1e-9 * static_cast<double>(end - start);
+}
+
+} // namespace
+
+const char* integrator_name(Integrator integrator) {
+    return integrator == Integrator::Megakernel ? "megakernel" : "wavefront";
+}
+
+const char* schedule_name(Schedule schedule) {
+    switch (schedule) {
+    case Schedule::Passes: return "passes";
+    case Schedule::Fullest: return "fullest";
+    default: return "refill";
+    }
+}
+
+const char* queue_push_name(QueuePush push) {
+    switch (push) {
+    case QueuePush::Atomic: return "atomic";
+    case QueuePush::Scan: return "scan";
+    default: return "group";
+    }
+}
+
+double RenderStats::kernel_seconds() const {
+    return std::accumulate(stages.begin(), stages.end(), 0.0,
+                           [](double s, const StageTime& t) { return s + t.seconds; });
+}
+
+double RenderStats::pool_occupancy() const {
+    double sum = 0.0;
+    size_t launches = 0;
+    for (const CounterSnapshot& c : counter_reads) {
+        if (c.closest_rays == 0) continue;
+        // A megakernel launch traces whole paths: its share of the pool is its samples.
+        sum += integrator == Integrator::Megakernel ? c.samples : c.closest_rays;
+        ++launches;
+    }
+    return launches && pool_size ? sum / (double(launches) * pool_size) : 0.0;
+}
+
+uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note) {
+    const uint32_t wanted = requested ? requested : kDefaultPoolSize;
+    const uint32_t size = std::min(wanted, pixel_count);
+    if (requested && size != requested && note)
+        *note = "pool size " + std::to_string(requested) + " capped at the pixel count, " +
+                std::to_string(size) + ": each path slot traces whole pixels";
+    return size;
+}
+
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes) {
+    const size_t room = device_memory > used_bytes ? (device_memory - used_bytes) / 2 : 0;
+    const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / (WF_QUEUE_COUNT * sizeof(cl_uint)));
+    return static_cast<uint32_t>(std::min<size_t>(pool, fits));
+}
+
+PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
+                               const RenderSettings& settings)
+    : device_(device), settings_(settings), scene_(scene), camera_(camera),
+      pool_(device.context, choose_pool_size(settings.pool_size, camera.width * camera.height, nullptr)),
+      film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers) {
+    params_.pixel_count = camera.width * camera.height;
+    params_.pool_size = pool_.size();
+    params_.max_depth = settings.max_depth;
+    params_.seed = settings.seed;
+    params_.roulette_depth = settings.roulette_depth;
+    params_.light_count = scene.light_count;
+    params_.light_sampling = settings.light_sampling;
+    params_.hemisphere = settings.hemisphere;
+    params_.sampler = settings.sampler;
+    params_.bounce_layers = settings.bounce_layers;
+    params_.environment_light = scene.environment_light;
+    params_.scene_diameter = scene.scene_diameter;
+    params_.environment = scene.environment.header;
+    if (settings.local_size < WF_PATH_LENGTH_BUCKETS)
+        throw InputError("local size " + std::to_string(settings.local_size) + " is below " +
+                         std::to_string(WF_PATH_LENGTH_BUCKETS) + ", the path-length histogram's buckets");
+    stats_.integrator = settings.integrator;
+    stats_.schedule = settings.schedule;
+    stats_.pool_size = pool_.size();
+    stats_.pool_bytes = pool_.bytes();
+    for (int s = 0; s < STAGE_COUNT; ++s) stats_.stages[s].name = kStageNames[s];
+    pool_.clear(device.queue); // every slot has started nothing
+}
+
+void PathIntegrator::launch(Stage stage, const cl::Kernel& kernel, uint32_t items) {
+    const size_t local = settings_.local_size;
+    const size_t global = (items + local - 1) / local * local;
+    cl::Event event;
+    device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local), nullptr,
+                                       &event);
+    pending_.emplace_back(stage, event);
+}
+
+std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t clear_from) {
+    std::array<cl_uint, WF_COUNTER_COUNT> counters{};
+    device_.queue.enqueueReadBuffer(pool_.counters, CL_TRUE, 0, sizeof(counters), counters.data());
+    if (clear_from < WF_COUNTER_COUNT)
+        device_.queue.enqueueFillBuffer(pool_.counters, 0u, clear_from * sizeof(cl_uint),
+                                        (WF_COUNTER_COUNT - clear_from) * sizeof(cl_uint));
+    CounterSnapshot snapshot;
+    std::copy_n(counters.begin(), WF_QUEUE_COUNT, snapshot.queues.begin());
+    snapshot.closest_rays = counters[WF_COUNTER_CLOSEST_RAYS];
+    snapshot.shadow_rays = counters[WF_COUNTER_SHADOW_RAYS];
+    for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
+        stats_.path_lengths[b] += counters[WF_COUNTER_PATH_LENGTHS + b];
+        snapshot.samples += counters[WF_COUNTER_PATH_LENGTHS + b]; // every accumulated path is in one bucket
+    }
+    stats_.closest_rays += snapshot.closest_rays;
+    stats_.shadow_rays += snapshot.shadow_rays;
+    stats_.samples += snapshot.samples;
+    stats_.nonfinite_samples += counters[WF_COUNTER_NONFINITE];
+    stats_.counter_reads.push_back(snapshot);
+    ++stats_.iterations;
+    for (const auto& [stage, event] : pending_) {
+        stats_.stages[stage].seconds += event_seconds(event);
+        ++stats_.stages[stage].launches;
+    }
+    pending_.clear();
+    if (on_progress_) on_progress_(stats_);
+    return counters;
+}
+
+void PathIntegrator::queue_every_slot() {
+    const uint32_t pool = pool_.size();
+    std::vector<cl_uint> all_slots(pool);
+    std::iota(all_slots.begin(), all_slots.end(), 0u);
+    device_.queue.enqueueWriteBuffer(pool_.queues, CL_TRUE, sizeof(cl_uint) * WF_QUEUE_REGENERATE * size_t{pool},
+                                     sizeof(cl_uint) * pool, all_slots.data());
+    std::array<cl_uint, WF_COUNTER_COUNT> counters{};
+    counters[WF_QUEUE_REGENERATE] = pool;
+    device_.queue.enqueueWriteBuffer(pool_.counters, CL_TRUE, 0, sizeof(counters), counters.data());
+}
+
+} // namespace wf

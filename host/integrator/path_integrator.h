@@ -1,0 +1,177 @@
+// path_integrator.h — what both integrators share: the render settings and
+// statistics, the path pool and the film on the device, kernel launches timed
+// by profiling events, and the counters the kernels keep.
+//
+// Two integrators run the same stage functions (kernels/stages/) and give the
+// same bytes for the same seed:
+//   WavefrontScheduler (wavefront_scheduler.h): one kernel per stage, over queues;
+//   MegakernelScheduler (megakernel_scheduler.h): one kernel takes each path
+//   through every stage.
+// A render is a sequence of rounds, each taking every pixel to a target sample
+// count; between rounds the film can be read. Since a pixel's samples are
+// traced one after another by its owning slot, the rounds change nothing in
+// the image: N samples in one round or in ten give the same bytes.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "device/device_scene.h"
+#include "film/film.h"
+#include "device/opencl_device.h"
+#include "integrator/path_pool.h"
+#include "wavefront/path_state.h"
+#include "wavefront/scene_types.h"
+
+namespace wf {
+
+enum class Integrator { Wavefront, Megakernel };
+
+// In which order the wavefront launches its stages (wavefront_scheduler.cpp).
+enum class Schedule {
+    Refill,  // every stage once per iteration, freed slots refilled at once
+    Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts
+    Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
+};
+
+// How the kernels append to queues and counters (kernels/common/queue_push.h),
+// in the order of its WF_PUSH_* values.
+enum class QueuePush { Group, Atomic, Scan };
+
+struct RenderSettings {
+    uint32_t spp = 16;
+    uint32_t max_depth = WF_UNLIMITED_DEPTH;
+    uint32_t seed = 0;
+    uint32_t pool_size = 0; // 0: chosen from the image and the device
+    uint32_t roulette_depth = 3;
+    uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
+    uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
+    uint32_t hemisphere = WF_HEMISPHERE_COSINE;
+    uint32_t sampler = WF_SAMPLER_INDEPENDENT;
+    uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
+    bool specialize = true;     // compile the kernels for the scene's features (host/device/scene_features.h)
+    std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
+    Integrator integrator = Integrator::Wavefront;
+    Schedule schedule = Schedule::Refill; // for the wavefront integrator
+    QueuePush queue_push = QueuePush::Group;
+    bool sort_materials = false; // reorder the extension queue by material before shade
+    // While it holds non-zero, no sample starts: the paths in flight end and
+    // the round returns early, each slot's pixels then one sample apart at most.
+    const std::atomic<int>* stop = nullptr;
+};
+
+const char* integrator_name(Integrator integrator);
+const char* schedule_name(Schedule schedule);
+const char* queue_push_name(QueuePush push);
+
+enum Stage {
+    STAGE_GENERATE,
+    STAGE_INTERSECT,
+    STAGE_SHADE,
+    STAGE_INTERSECT_SHADOW,
+    STAGE_ROULETTE,
+    STAGE_ACCUMULATE,
+    STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.cl)
+    STAGE_MEGAKERNEL,
+    STAGE_COUNT
+};
+
+struct StageTime {
+    const char* name = "";
+    double seconds = 0.0; // from OpenCL profiling events
+    uint64_t launches = 0;
+};
+
+// What one read of the device counters showed: the queue lengths as read,
+// and the work done since the previous read.
+struct CounterSnapshot {
+    std::array<uint32_t, WF_QUEUE_COUNT> queues{};
+    uint32_t closest_rays = 0, shadow_rays = 0, samples = 0;
+};
+
+struct RenderStats {
+    Integrator integrator = Integrator::Wavefront;
+    Schedule schedule = Schedule::Refill;
+    double seconds = 0.0; // wall time spent in render_to()
+    uint64_t samples = 0;
+    uint64_t closest_rays = 0;
+    uint64_t shadow_rays = 0;
+    uint64_t nonfinite_samples = 0;
+    uint64_t iterations = 0; // reads of the counters: wavefront iterations or steps, megakernel launches
+    uint32_t pool_size = 0;
+    size_t pool_bytes = 0;
+    std::array<StageTime, STAGE_COUNT> stages{};
+    // Finished paths by bounces: bucket 0 holds 0, bucket b ≥ 1 holds [2^(b−1), 2^b), the last open-ended.
+    std::array<uint64_t, WF_PATH_LENGTH_BUCKETS> path_lengths{};
+    std::vector<CounterSnapshot> counter_reads; // one per iteration
+    double kernel_seconds() const;
+    // Mean share of the pool traced by each launch of the closest-hit work.
+    double pool_occupancy() const;
+};
+
+// The pool size used for a render: the requested one (or a default), never more
+// than the pixel count, since each slot owns whole pixels. `note` says why when
+// it differs from the request.
+uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note);
+
+// `pool`, or fewer paths where they would take more than half the memory that
+// `used_bytes` (scene and image) leave, or a larger queue buffer than one
+// allocation may be; 0 when not even one path fits.
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes);
+
+// Sets consecutive arguments of `kernel` from index `first` on; returns the next index.
+template <class... Args> cl_uint set_kernel_args(cl::Kernel& kernel, cl_uint first, const Args&... args) {
+    (kernel.setArg(first++, args), ...);
+    return first;
+}
+
+class PathIntegrator {
+public:
+    virtual ~PathIntegrator() = default;
+
+    // Continues every pixel up to `spp` samples (a round), unless settings.stop
+    // ends it early.
+    virtual void render_to(uint32_t spp) = 0;
+
+    const RenderStats& stats() const { return stats_; }
+    const Film& film() const { return film_; }
+    Film& film() { return film_; }
+    PathPool& pool() { return pool_; }
+
+    // Called after every read of the counters (a progress display).
+    void on_progress(std::function<void(const RenderStats&)> f) { on_progress_ = std::move(f); }
+
+protected:
+    PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
+                   const RenderSettings& settings);
+
+    // Enqueues `kernel` over `items` work-items, rounded up to whole
+    // work-groups; its time is added to `stage` at the next read_counters().
+    void launch(Stage stage, const cl::Kernel& kernel, uint32_t items);
+    // Waits for the device and reads every counter; adds the statistics to
+    // stats_ and records a snapshot; then zeroes counters [clear_from, end) on
+    // the device. Returns the counters as read.
+    std::array<cl_uint, WF_COUNTER_COUNT> read_counters(uint32_t clear_from);
+    // Every slot to the regeneration queue, the other counters to zero: the start of a round.
+    void queue_every_slot();
+    bool stopping() const { return settings_.stop && settings_.stop->load() != 0; }
+
+    const OpenClDevice& device_;
+    RenderSettings settings_;
+    RenderParams params_{};
+    const DeviceScene& scene_;
+    Camera camera_;
+    PathPool pool_;
+    Film film_;
+    RenderStats stats_;
+
+private:
+    std::vector<std::pair<Stage, cl::Event>> pending_; // launched since the last read
+    std::function<void(const RenderStats&)> on_progress_;
+};
+
+} // namespace wf

@@ -1,0 +1,145 @@
+// wavefront_scheduler.cpp — the three schedules of the stage kernels.
+#include "integrator/wavefront_scheduler.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace wf {
+
+WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Program& program,
+                                       const DeviceScene& scene, const Camera& camera,
+                                       const RenderSettings& settings)
+    : PathIntegrator(device, scene, camera, settings) {
+    for (int s = 0; s < kStageKernels; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
+    if (settings.sort_materials) {
+        count_materials_ = cl::Kernel(program, "count_materials");
+        scan_materials_ = cl::Kernel(program, "scan_materials");
+        scatter_materials_ = cl::Kernel(program, "scatter_materials");
+        key_counts_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * kSortKeys);
+        sorted_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * size_t{pool_.size()});
+        device.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+    }
+}
+
+void WavefrontScheduler::extend(uint32_t items) {
+    launch(STAGE_INTERSECT, items);
+    if (settings_.sort_materials) {
+        PathIntegrator::launch(STAGE_SORT, count_materials_, items);
+        PathIntegrator::launch(STAGE_SORT, scan_materials_, 1);
+        PathIntegrator::launch(STAGE_SORT, scatter_materials_, items);
+        // The extension queue is the first region of the queue buffer.
+        device_.queue.enqueueCopyBuffer(sorted_, pool_.queues, 0, 0, sizeof(cl_uint) * size_t{items});
+        device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+    }
+    launch(STAGE_SHADE, items);
+}
+
+// Every kernel's arguments: the shared ones (WF_STAGE_PARAMS), then its own.
+// The render constants change from round to round.
+void WavefrontScheduler::set_stage_args() {
+    auto shared_then = [this](Stage s) -> cl::Kernel& {
+        cl::Kernel& k = kernels_[s];
+        pool_.set_stage_args(k, params_);
+        return k;
+    };
+    const cl_uint own = PathPool::kSharedStageArgs;
+    set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
+    cl::Kernel& intersect = shared_then(STAGE_INTERSECT);
+    set_texture_args(intersect, set_kernel_args(intersect, own, scene_.nodes, scene_.triangles), scene_.textures);
+    cl::Kernel& shade = shared_then(STAGE_SHADE);
+    const cl_uint shade_textures = set_kernel_args(shade, own, scene_.triangles, scene_.normals, scene_.materials,
+                                                   scene_.lights, scene_.punctual, scene_.environment.texels,
+                                                   scene_.environment.distribution);
+    set_kernel_args(shade, set_texture_args(shade, shade_textures, scene_.textures), film_.layers,
+                    film_.layer_compensation);
+    cl::Kernel& shadow = shared_then(STAGE_INTERSECT_SHADOW);
+    set_kernel_args(shadow,
+                    set_texture_args(shadow, set_kernel_args(shadow, own, scene_.nodes, scene_.triangles),
+                                     scene_.textures),
+                    film_.layers, film_.layer_compensation);
+    shared_then(STAGE_ROULETTE);
+    if (settings_.sort_materials) {
+        set_kernel_args(count_materials_, pool_.set_stage_args(count_materials_, params_), scene_.triangles,
+                        key_counts_);
+        set_kernel_args(scan_materials_, 0, key_counts_);
+        set_kernel_args(scatter_materials_, pool_.set_stage_args(scatter_materials_, params_), scene_.triangles,
+                        key_counts_, sorted_);
+    }
+    set_kernel_args(shared_then(STAGE_ACCUMULATE), own, film_.sum, film_.compensation, film_.sum_squares,
+                    film_.squares_compensation, film_.samples);
+}
+
+void WavefrontScheduler::render_to(uint32_t spp) {
+    const auto start = std::chrono::steady_clock::now();
+    params_.spp = spp;
+    set_stage_args();
+    // Every slot goes to the regeneration queue; those whose pixels already
+    // have `spp` samples start nothing and drop out at once.
+    queue_every_slot();
+    if (settings_.schedule == Schedule::Fullest) run_fullest_first();
+    else run_iterations(settings_.schedule == Schedule::Passes);
+    device_.queue.finish();
+    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Refill and passes. The queues shade fills are read before their stages, so
+// that each is launched at its own length and not at all when empty (a scene
+// without lights never launches intersect_shadow). Intersect_shadow sends some
+// of its paths to roulette and the rest to accumulation, and roulette ends
+// some, so those two are sized for everything that may reach them; their
+// kernels stop at the queue's final length.
+void WavefrontScheduler::run_iterations(bool passes) {
+    const cl::CommandQueue& queue = device_.queue;
+    const uint32_t pool = pool_.size();
+    uint32_t extending = 0, regenerating = pool;
+    for (;;) {
+        const bool stop = stopping(); // read once: it may change at any time
+        if (extending + (stop ? 0u : regenerating) == 0) break;
+        const bool generating = regenerating > 0 && !(passes && extending > 0) && !stop;
+        if (generating) launch(STAGE_GENERATE, regenerating);
+        extend(std::min(pool, extending + (generating ? regenerating : 0u)));
+        // Shade consumed EXTEND and generate REGENERATE; passes keep the
+        // slots freed so far in REGENERATE until the pass ends.
+        queue.enqueueFillBuffer(pool_.counters, 0u, 0, (generating ? 2 : 1) * sizeof(cl_uint));
+        std::array<cl_uint, 3> shaded{}; // SHADOW, CONTINUE, FINISHED
+        queue.enqueueReadBuffer(pool_.counters, CL_TRUE, WF_QUEUE_SHADOW * sizeof(cl_uint), sizeof(shaded),
+                                shaded.data());
+        const uint32_t shadowed = shaded[0], continuing = shaded[1] + shadowed;
+        const uint32_t finishing = shaded[2] + continuing;
+        if (shadowed) launch(STAGE_INTERSECT_SHADOW, shadowed);
+        if (continuing) launch(STAGE_ROULETTE, continuing);
+        if (finishing) launch(STAGE_ACCUMULATE, finishing);
+        const auto counters = read_counters(WF_QUEUE_SHADOW); // the queues consumed above, and the statistics
+        extending = counters[WF_QUEUE_EXTEND];
+        regenerating = counters[WF_QUEUE_REGENERATE];
+    }
+}
+
+// Fullest first. Each queue has one consumer (EXTEND two: intersect, then
+// shade over the same slots), which takes it whole; its counter is then
+// zeroed. Ties go to the later stage, which brings paths nearer their end.
+void WavefrontScheduler::run_fullest_first() {
+    constexpr int kLaterFirst[WF_QUEUE_COUNT] = {WF_QUEUE_FINISHED, WF_QUEUE_CONTINUE, WF_QUEUE_SHADOW,
+                                                 WF_QUEUE_EXTEND, WF_QUEUE_REGENERATE};
+    std::array<cl_uint, WF_COUNTER_COUNT> counters{};
+    counters[WF_QUEUE_REGENERATE] = pool_.size();
+    for (;;) {
+        int fullest = kLaterFirst[0];
+        if (stopping()) counters[WF_QUEUE_REGENERATE] = 0; // start nothing more
+        for (int q : kLaterFirst)
+            if (counters[q] > counters[fullest]) fullest = q;
+        const uint32_t items = counters[fullest];
+        if (items == 0) break;
+        switch (fullest) {
+        case WF_QUEUE_REGENERATE: launch(STAGE_GENERATE, items); break;
+        case WF_QUEUE_EXTEND: extend(items); break;
+        case WF_QUEUE_SHADOW: launch(STAGE_INTERSECT_SHADOW, items); break;
+        case WF_QUEUE_CONTINUE: launch(STAGE_ROULETTE, items); break;
+        default: launch(STAGE_ACCUMULATE, items); break;
+        }
+        device_.queue.enqueueFillBuffer(pool_.counters, 0u, fullest * sizeof(cl_uint), sizeof(cl_uint));
+        counters = read_counters(WF_QUEUE_COUNT); // the statistics
+    }
+}
+
+} // namespace wf

@@ -1,0 +1,52 @@
+// wavefront_scheduler.h — the host loop that drives the stage kernels over
+// the path pool until every pixel has its samples.
+//
+//   generate → intersect → shade → intersect_shadow → roulette → accumulate
+//
+// Each stage reads one queue of path slots and appends to others; a slot is
+// in one queue at a time, so any order of launches is correct and the
+// schedule (--schedule) changes the speed, never the image:
+//   refill  — one iteration launches every stage once, in pipeline order,
+//             each at its queue's length; slots freed by accumulate are
+//             refilled by generate at the start of the next, so the pool
+//             stays full until the last samples of a round are started;
+//   passes  — pbrt-v4's way: the same iterations, but new samples start only
+//             once every path of the pass has ended, so each iteration is one
+//             depth and the pool drains at the end of every pass;
+//   fullest — Cycles X's way: read the queue counters after every launch and
+//             launch the stage whose queue is longest.
+// --sort-materials adds a counting sort of the extension queue by material
+// between intersect and shade (kernels/stages/sort_by_material.cl).
+#pragma once
+
+#include <array>
+
+#include "integrator/path_integrator.h"
+
+namespace wf {
+
+class WavefrontScheduler : public PathIntegrator {
+public:
+    WavefrontScheduler(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
+                       const Camera& camera, const RenderSettings& settings);
+
+    void render_to(uint32_t spp) override;
+
+private:
+    void set_stage_args();
+    void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
+    void run_iterations(bool passes);
+    void run_fullest_first();
+    // Intersect and shade over `items` paths of the extension queue, sorted
+    // by material between them when the settings ask.
+    void extend(uint32_t items);
+
+    static constexpr int kStageKernels = STAGE_ACCUMULATE + 1;
+    static constexpr size_t kSortKeys = 256; // WF_SORT_KEYS
+    std::array<cl::Kernel, kStageKernels> kernels_; // one per wavefront stage, by name
+    // --sort-materials only: its kernels, the key counts and the sorted queue.
+    cl::Kernel count_materials_, scan_materials_, scatter_materials_;
+    cl::Buffer key_counts_, sorted_;
+};
+
+} // namespace wf

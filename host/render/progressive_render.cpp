@@ -1,0 +1,65 @@
+// progressive_render.cpp — round sizes: doubling by default; with
+// --report-every, as many samples as the measured rate fits in that time; and
+// never more than the time budget has left. Rounds change nothing in the image
+// (wavefront_scheduler.h), only when the film is looked at.
+#include "render/progressive_render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace wf {
+namespace {
+
+constexpr uint32_t kUnlimitedSpp = 1u << 24;
+// Below this many samples a pixel's variance says too little to stop on.
+constexpr uint32_t kMinSppForTargetError = 16;
+
+// The sample count the next round should reach, or `done` when none fits.
+uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_spp, double elapsed) {
+    const uint32_t limit = o.max_spp ? o.max_spp : kUnlimitedSpp;
+    uint32_t next = done == 0 ? 1u : 2u * done;
+    if (o.report_every > 0.0 && seconds_per_spp > 0.0)
+        next = done + std::max(1u, static_cast<uint32_t>(std::min(o.report_every / seconds_per_spp, double(limit))));
+    if (o.time_budget > 0.0 && seconds_per_spp > 0.0) {
+        const double fits = std::floor((o.time_budget - elapsed) / seconds_per_spp);
+        if (fits < 1.0) return done;
+        next = std::min(next, done + static_cast<uint32_t>(std::min(fits, double(limit))));
+    }
+    return std::min(next, limit);
+}
+
+} // namespace
+
+FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
+                                 const std::function<void(const Checkpoint&)>& on_checkpoint) {
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    FilmReadout film;
+    uint32_t done = options.start_spp;
+    for (;;) {
+        const uint32_t rendered = done - options.start_spp; // by this run, whose time stats() has
+        const double seconds_per_spp = rendered ? renderer.stats().seconds / rendered : 0.0;
+        const uint32_t next = next_round(options, done, seconds_per_spp, elapsed());
+        if (next <= done) break;
+        renderer.render_to(next);
+        film = renderer.read();
+        const bool stopped = options.stop && options.stop->load() != 0;
+        done = stopped ? film.min_samples : next;
+
+        Checkpoint c;
+        c.seconds = elapsed();
+        c.spp = done;
+        if (options.reference) c.error = compare_images(film.mean, *options.reference);
+        if (done >= 2) c.relmse_estimate = estimate_relmse(film.mean, film.variance_of_mean);
+        on_checkpoint(c);
+
+        const bool time_is_up = options.time_budget > 0.0 && c.seconds >= options.time_budget;
+        const bool accurate = options.target_relmse > 0.0 && done >= kMinSppForTargetError &&
+                              *c.relmse_estimate < options.target_relmse;
+        if (time_is_up || accurate || stopped) break;
+    }
+    return film;
+}
+
+} // namespace wf

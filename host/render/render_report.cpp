@@ -1,0 +1,77 @@
+// render_report.cpp — ray rates are given twice: over the render's wall time
+// (what a user waits for) and over the intersect kernels' own time (what the
+// traversal achieves), so a slow scheduler cannot hide behind a fast kernel.
+#include "render/render_report.h"
+
+#include <iomanip>
+#include <ostream>
+
+#include "integrator/path_pool.h"
+
+namespace wf {
+namespace {
+
+double per_second(double count, double seconds) { return seconds > 0.0 ? count / seconds : 0.0; }
+
+} // namespace
+
+void print_report(std::ostream& out, const RenderSummary& s) {
+    const RenderStats& st = s.stats;
+    const double kernel = st.kernel_seconds();
+    const double closest_kernel = st.stages[STAGE_INTERSECT].seconds;
+    const double shadow_kernel = st.stages[STAGE_INTERSECT_SHADOW].seconds;
+    out << std::fixed << std::setprecision(3);
+    out << "scene      " << s.scene << ": " << s.triangles << " triangles, " << s.materials << " materials, "
+        << s.emissive_triangles << " emissive triangles, " << s.punctual_lights << " punctual lights, "
+        << (s.environment ? "an environment" : "no environment") << "\n";
+    out << "features   " << s.features << "\n";
+    out << "device     " << s.device << "\n";
+    out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp -> " << s.output << "\n";
+    out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes
+        << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s"
+        << (s.kernels_from_cache ? " (from cache)" : "") << ", render "
+        << st.seconds << " s\n";
+    out << std::setprecision(2);
+    out << "samples    " << st.samples << " at " << per_second(st.samples, st.seconds) * 1e-6 << " M/s; mean path "
+        << per_second(st.closest_rays, st.samples) << " segments; non-finite samples " << st.nonfinite_samples << "\n";
+    out << "rays       closest " << st.closest_rays << " (" << per_second(st.closest_rays, st.seconds) * 1e-6
+        << " M/s wall, " << per_second(st.closest_rays, closest_kernel) * 1e-6 << " M/s in intersect), shadow "
+        << st.shadow_rays << " (" << per_second(st.shadow_rays, st.seconds) * 1e-6 << " M/s wall, "
+        << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow)\n";
+    out << "memory     " << std::setprecision(1) << s.device_bytes / 1048576.0 << " MiB on the device; pool "
+        << st.pool_size << " paths of " << PathPool::state_bytes_per_path() << " bytes, queues "
+        << PathPool::bytes_per_path() - PathPool::state_bytes_per_path() << " bytes a path; BVH and triangles "
+        << per_second(s.traversal_bytes, s.triangles) << " bytes a triangle\n";
+    const bool megakernel = st.integrator == Integrator::Megakernel;
+    out << "schedule   " << integrator_name(st.integrator);
+    if (megakernel) out << ": " << st.iterations << " launches";
+    else out << ", " << schedule_name(st.schedule) << ": " << st.iterations << " iterations";
+    out << ", pool occupancy " << std::setprecision(1) << 100.0 * st.pool_occupancy() << "%; kernels "
+        << std::setprecision(3) << kernel
+        << " s, host and transfers " << st.seconds - kernel << " s (" << std::setprecision(1)
+        << 100.0 * per_second(st.seconds - kernel, st.seconds) << "%)\n";
+    out << "path lengths";
+    for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
+        if (!st.path_lengths[b]) continue;
+        const uint64_t lo = b == 0 ? 0 : uint64_t{1} << (b - 1), hi = (uint64_t{1} << b) - 1;
+        out << "  " << lo;
+        if (b == WF_PATH_LENGTH_BUCKETS - 1) out << "+";
+        else if (hi > lo) out << "-" << hi;
+        out << ": " << std::setprecision(1) << 100.0 * per_second(st.path_lengths[b], st.samples) << "%";
+    }
+    out << " (bounces per sample)\n";
+    out << "stage              launches     seconds   share\n";
+    for (int stage = 0; stage < STAGE_COUNT; ++stage) {
+        if ((stage == STAGE_MEGAKERNEL) != megakernel) continue; // the other integrator's
+        const StageTime& t = st.stages[stage];
+        out << "  " << std::left << std::setw(18) << t.name << std::right;
+        if (t.launches == 0 && st.iterations > 0) { // a stage the scene cannot use
+            out << "  left out\n";
+            continue;
+        }
+        out << std::setw(8) << t.launches << std::setw(12) << std::setprecision(3) << t.seconds << std::setw(7)
+            << std::setprecision(1) << 100.0 * per_second(t.seconds, kernel) << "%\n";
+    }
+}
+
+} // namespace wf

@@ -1,0 +1,44 @@
+// render_report.h — the closing report of a render: what it cost, stage by
+// stage, and whether any sample went non-finite.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "integrator/path_integrator.h"
+
+namespace wf {
+
+struct RenderTimes {
+    double load = 0.0;
+    double bvh_build = 0.0;
+    double kernel_build = 0.0;
+};
+
+struct RenderSummary {
+    std::string scene;
+    size_t triangles = 0;
+    size_t materials = 0;
+    size_t emissive_triangles = 0;
+    size_t punctual_lights = 0;
+    bool environment = false;
+    std::string features; // what the kernels were compiled for
+    bool kernels_from_cache = false;
+    size_t bvh_nodes = 0;
+    int bvh_depth = 0;
+    std::string device;
+    uint32_t width = 0, height = 0, spp = 0;
+    size_t device_bytes = 0;
+    QueuePush queue_push = QueuePush::Group;
+    uint32_t local_size = 0;
+    size_t traversal_bytes = 0; // the BVH nodes and the triangles they hold: what intersection reads
+    RenderTimes times;
+    RenderStats stats;
+    std::string output;
+    int interrupted_by = 0; // the signal that stopped the render early, or 0
+    std::string pool_note;  // why the pool is smaller than the default, when it is
+};
+
+void print_report(std::ostream& out, const RenderSummary& s);
+
+} // namespace wf

@@ -1,0 +1,144 @@
+// renderer.cpp — the order of set-up: everything that can be rejected (the
+// device's memory) is rejected before any long work starts.
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "bvh/bvh_builder.h"
+#include "base/errors.h"
+#include "device/layout_check.h"
+#include "integrator/megakernel_scheduler.h"
+#include "integrator/path_pool.h"
+#include "device/scene_features.h"
+#include "integrator/wavefront_scheduler.h"
+
+namespace wf {
+namespace {
+
+std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
+
+void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t pool_bytes, size_t film_bytes,
+                         size_t largest_buffer) {
+    const size_t needed = scene_bytes + pool_bytes + film_bytes;
+    if (needed > device.global_memory)
+        throw InputError("the render needs " + mib(needed) + " of device memory (scene " + mib(scene_bytes) +
+                         ", paths " + mib(pool_bytes) + ", image " + mib(film_bytes) + ") but " + device.name +
+                         " has " + mib(device.global_memory));
+    if (largest_buffer > device.max_allocation)
+        throw InputError("the render needs a " + mib(largest_buffer) + " buffer but " + device.name +
+                         " allocates at most " + mib(device.max_allocation) + " at once");
+}
+
+} // namespace
+
+KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
+                                   std::string* features_described) {
+    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    if (features_described)
+        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
+    const std::optional<ProgramCache> cache =
+        settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
+    const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
+    std::string options = feature_defines(features);
+    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
+        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push)) +
+                   " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
+}
+
+Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
+                   const RenderSettings& requested)
+    : device_(device) {
+    RenderSettings settings = requested;
+    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, nullptr);
+
+    const auto start = std::chrono::steady_clock::now();
+    const Bvh bvh = build_bvh(scene.positions);
+    summary_.times.bvh_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const DeviceSceneData data = make_device_scene_data(scene, bvh);
+
+    const size_t pixels = size_t{size.width} * size.height;
+    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers);
+    if (requested.pool_size == 0) {
+        // The default pool, capped to half the memory the scene and the film
+        // leave, and to the largest buffer the device allocates: a small
+        // device renders with fewer paths in flight rather than failing.
+        const uint32_t fits = pool_that_fits(settings.pool_size, device.info.global_memory,
+                                             device.info.max_allocation, data.bytes() + film_bytes);
+        if (fits > 0 && fits < settings.pool_size) {
+            settings.pool_size = fits;
+            summary_.pool_note = "pool of " + std::to_string(fits) + " paths, what " + device.info.name +
+                                 "'s memory holds beside the scene and the image (" +
+                                 mib(device.info.global_memory) + ")";
+        }
+    }
+    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
+                        film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
+                                  pixels * sizeof(cl_float4),
+                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
+
+    check_shared_layouts(device);
+    program_ = build_render_program(device, scene, settings, &summary_.features);
+    summary_.kernels_from_cache = program_.from_cache;
+    device_scene_ = upload_scene(device.context, data);
+    const Camera device_camera = make_device_camera(camera, size);
+    if (settings.integrator == Integrator::Megakernel)
+        scheduler_ = std::make_unique<MegakernelScheduler>(device, program_.program, device_scene_, device_camera,
+                                                           settings);
+    else
+        scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_, device_camera,
+                                                          settings);
+
+    summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
+                      " compute units, " + device.info.platform + ")";
+    summary_.times.kernel_build = program_.build_seconds;
+    summary_.triangles = scene.triangle_count();
+    summary_.materials = scene.materials.size();
+    summary_.emissive_triangles = data.emissive_triangles;
+    summary_.punctual_lights = data.punctual.size();
+    summary_.environment = data.environment != nullptr;
+    summary_.bvh_nodes = bvh.nodes.size();
+    summary_.bvh_depth = bvh.depth;
+    summary_.queue_push = settings.queue_push;
+    summary_.local_size = settings.local_size;
+    summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(Triangle);
+    summary_.width = size.width;
+    summary_.height = size.height;
+    summary_.device_bytes = device_scene_.bytes + scheduler_->stats().pool_bytes + scheduler_->film().bytes();
+}
+
+uint32_t Renderer::resume(const FilmState& state) {
+    Film& film = scheduler_->film();
+    if (state.width != film.width || state.height != film.height)
+        throw InputError("the partial render is " + std::to_string(state.width) + "x" + std::to_string(state.height) +
+                         ", not " + std::to_string(film.width) + "x" + std::to_string(film.height));
+    // Slot i takes its pixels i, i + pool, ... in turn, so a stopped render
+    // leaves each slot's first pixels one sample ahead of the rest, never a
+    // pixel behind one that comes after it; the count of samples it started
+    // is their sum.
+    const uint32_t pool = scheduler_->pool().size();
+    std::vector<uint32_t> started(pool, 0u);
+    for (size_t p = 0; p < state.samples.size(); ++p) {
+        const uint32_t slot = static_cast<uint32_t>(p % pool);
+        const uint32_t n = state.samples[p], first = state.samples[slot];
+        const uint32_t previous = p >= pool ? state.samples[p - pool] : n;
+        if (n > previous || n + 1 < first)
+            throw InputError("the partial render's sample counts were not left by a pool of " + std::to_string(pool) +
+                             " paths (pixel " + std::to_string(p) + ")");
+        started[slot] += n;
+    }
+    film.restore(device_.queue, state);
+    scheduler_->pool().restore_samples_started(device_.queue, started);
+    return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
+}
+
+RenderSummary Renderer::summary() const {
+    RenderSummary s = summary_;
+    s.stats = stats();
+    s.spp = static_cast<uint32_t>(s.stats.samples / (size_t{s.width} * s.height));
+    return s;
+}
+
+} // namespace wf

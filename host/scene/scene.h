@@ -1,0 +1,91 @@
+// scene.h — the scene as loaded, before any device layout: world-space
+// triangles with their shading normals and materials, and the camera if the
+// file has one. Loaders produce it (gltf_loader.h); device_scene.h turns it
+// into the buffers the kernels read.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "wavefront/scene_types.h"
+#include "scene/texture_set.h"
+
+namespace wf {
+
+struct EnvironmentMap; // environment_map.h
+
+// glTF 2.0 metallic-roughness with KHR_materials_transmission, _ior and
+// _specular. The defaults here are a plain Lambertian surface (specular 0),
+// what scenes built in code mean; the glTF loader sets glTF's own defaults.
+struct SceneMaterial {
+    std::string name;
+    glm::vec3 base_color{0.8f}; // linear, in [0, 1]
+    float metallic = 0.0f;
+    float roughness = 1.0f;     // perceptual; GGX alpha = roughness^2
+    float transmission = 0.0f;
+    float ior = 1.5f;
+    float specular = 0.0f;      // 0: no specular lobe at all
+    glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
+    bool double_sided = false;  // one-sided surfaces emit from the front face only
+
+    // Texture maps, one per WF_TEXTURE_* slot (scene_types.h), indexing
+    // Scene::textures; none by default. The factors above multiply them.
+    std::array<TextureRef, WF_TEXTURE_SLOTS> textures = {no_texture(), no_texture(), no_texture(), no_texture()};
+    float normal_scale = 1.0f;          // glTF normalTexture.scale
+    uint32_t alpha_mode = WF_ALPHA_OPAQUE;
+    float alpha_cutoff = 0.5f;          // for WF_ALPHA_MASK
+    float base_alpha = 1.0f;            // baseColorFactor's alpha
+};
+
+struct SceneCamera {
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f}; // unit
+    glm::vec3 up{0.0f, 1.0f, 0.0f};       // unit, orthogonal to forward
+    float vertical_fov = 0.6911f;         // radians
+    float aspect = 0.0f;                  // width / height; 0 when the file leaves it open
+};
+
+struct Bounds {
+    glm::vec3 lo{std::numeric_limits<float>::infinity()};
+    glm::vec3 hi{-std::numeric_limits<float>::infinity()};
+    void grow(const glm::vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void grow(const Bounds& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    bool empty() const { return !(lo.x <= hi.x); }
+    glm::vec3 center() const { return 0.5f * (lo + hi); }
+    glm::vec3 extent() const { return hi - lo; }
+};
+
+struct Scene {
+    // Three entries per triangle, counter-clockwise seen from the front face.
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals; // shading normals, per corner; never empty beside positions
+    // Per corner like normals when loaded from glTF (zero where the file has
+    // none); empty for scenes built in code, which have no texture coordinates.
+    std::vector<glm::vec2> uv0, uv1; // TEXCOORD_0 and TEXCOORD_1
+    std::vector<glm::vec4> tangents; // xyz unit, orthogonal to the normal; w = ±1: bitangent = cross(n, t) w
+    std::vector<uint32_t> triangle_material; // one per triangle, index into materials
+    std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
+    std::vector<SceneMaterial> materials;
+    std::vector<std::string> mesh_names;
+    std::vector<PunctualLight> punctual_lights;           // KHR_lights_punctual, in world space
+    std::shared_ptr<const EnvironmentMap> environment; // light from infinitely far; none when null
+    TextureSet textures; // what SceneMaterial::textures index
+    std::optional<SceneCamera> camera;
+    std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
+
+    size_t triangle_count() const { return triangle_material.size(); }
+    Bounds bounds() const {
+        Bounds b;
+        for (const glm::vec3& p : positions) b.grow(p);
+        return b;
+    }
+};
+
+} // namespace wf

@@ -1,0 +1,279 @@
+// test_cli.cpp — the `wavefront` executable as a user meets it: exit codes,
+// one-line errors that name the thing at fault, and the files it writes.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "image/image_io.h"
+#include "support/test_support.h"
+
+namespace wf {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("wavefront_cli_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    test::ProcessResult run(const std::string& args) const { return test::run_wavefront(args, dir_.string()); }
+
+    // A bad invocation: exit code 2 and exactly one line on stderr containing `names`.
+    void expect_rejected(const std::string& args, const std::string& names) const {
+        const test::ProcessResult r = run(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(names), std::string::npos) << args << ": '" << r.err << "' should name '" << names << "'";
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": '" << r.err << "'";
+    }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
+
+    fs::path dir_;
+};
+
+const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
+
+// Every flag of `render --help` says its default; the commands and the version are listed.
+TEST_F(Cli, HelpDocumentsEveryFlagWithItsDefault) {
+    const test::ProcessResult top = run("--help");
+    EXPECT_EQ(top.exit_code, 0);
+    for (const char* command : {"render", "devices", "cache warm", "cache clear", "--version"})
+        EXPECT_NE(top.out.find(command), std::string::npos) << command;
+    const test::ProcessResult help = run("render --help");
+    EXPECT_EQ(help.exit_code, 0);
+    std::istringstream lines(help.out);
+    int flags = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("    --", 0) != 0 && line.rfind("    -o", 0) != 0) continue;
+        ++flags;
+        EXPECT_NE(line.find("(default: "), std::string::npos) << line;
+    }
+    EXPECT_GE(flags, 30);
+    const test::ProcessResult version = run("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_EQ(version.out, "wavefront " WF_VERSION "\n");
+}
+
+TEST_F(Cli, DevicesListsTheCpu) {
+    const test::ProcessResult r = run("devices");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("type cpu"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, BadFlagsAreRejectedByName) {
+    expect_rejected("render " + kCornell + " --spp 0", "--spp 0");
+    expect_rejected("render " + kCornell + " --spp abc", "--spp abc");
+    expect_rejected("render " + kCornell + " --width -5", "--width -5");
+    expect_rejected("render " + kCornell + " --width 100000 --height 100000", "--width 100000");
+    expect_rejected("render " + kCornell + " --frobnicate", "frobnicate");
+    expect_rejected("render", "no scene file");
+    expect_rejected("paint " + kCornell, "paint");
+    expect_rejected("render " + kCornell + " --device 99 -o " + path("x.png"), "--device 99");
+    // 2^30 pixels need 36 GiB of film: refused, saying so, before any allocation.
+    expect_rejected("render " + kCornell + " --width 32768 --height 32768 -o " + path("x.png"), "device memory");
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+TEST_F(Cli, BadScenesAreRejectedByName) {
+    expect_rejected("render " + path("missing.gltf"), "missing.gltf");
+    write("broken.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ ");
+    expect_rejected("render " + path("broken.gltf"), "broken.gltf");
+    // One triangle whose second corner is NaN: the buffer holds 3 floats per corner.
+    const std::string nan_triangle = "AAAAAAAAAAAAAAAAAADAfwAAAAAAAAAAAAAAAAAAgD8AAAAA"; // base64 of 9 floats
+    write("nan.gltf", std::string(R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+      "meshes":[{"name":"spiky","primitives":[{"attributes":{"POSITION":0}}]}],
+      "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],
+      "bufferViews":[{"buffer":0,"byteLength":36}],
+      "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)") + nan_triangle + R"("}]})");
+    expect_rejected("render " + path("nan.gltf"), "spiky");
+}
+
+TEST_F(Cli, RendersPngAndExrWithMetadata) {
+    const test::ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
+    ASSERT_EQ(png.exit_code, 0) << png.err;
+    EXPECT_NE(png.out.find("non-finite samples 0"), std::string::npos) << png.out;
+    const test::ProcessResult exr = run("render " + kCornell + " --width 32 --spp 2 --seed 5 -o " + path("cornell.exr"));
+    ASSERT_EQ(exr.exit_code, 0) << exr.err;
+
+    auto in = OIIO::ImageInput::open(path("cornell.png"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
+    EXPECT_EQ(in->spec().width, 32);
+    in = OIIO::ImageInput::open(path("cornell.exr"));
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    EXPECT_EQ(spec.format, OIIO::TypeDesc::FLOAT);
+    EXPECT_EQ(spec.height, 32); // the camera's aspect is 1
+    EXPECT_EQ(spec.get_int_attribute("wavefront:samplesPerPixel"), 2);
+    EXPECT_EQ(spec.get_int_attribute("wavefront:seed"), 5);
+    EXPECT_GT(spec.get_float_attribute("wavefront:renderTimeSeconds"), 0.0f);
+    EXPECT_FALSE(spec.get_string_attribute("wavefront:device").empty());
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:seed"), "5");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:size"), "32x32");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:camera"), "first");
+    EXPECT_EQ(spec.get_string_attribute("wavefront:option:version"), WF_VERSION);
+    EXPECT_EQ(spec.get_int_attribute("wavefront:interrupted", -1), 0);
+}
+
+// Files from anywhere, written to anywhere: odd names work, and every place
+// that cannot work is named in one line, exit 2, before any rendering and
+// with no output file left behind.
+TEST_F(Cli, HostilePathsAreNamedAndLeaveNoOutput) {
+    const fs::path odd = dir_ / "a folder with spaces and ünïcödé";
+    fs::create_directories(odd);
+    fs::copy_file(kCornell, odd / "cornell böx.gltf");
+    const test::ProcessResult r = run("render '" + (odd / "cornell böx.gltf").string() +
+                                      "' --width 16 --spp 1 -o '" + (odd / "ëxr out.exr").string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(odd / "ëxr out.exr"));
+
+    const std::string small = "render " + kCornell + " --width 16 --spp 1 ";
+    expect_rejected(small + "-o " + path("no/such/folder/x.png"), "no/such/folder");
+    write("plain.txt", "not a folder");
+    expect_rejected(small + "-o " + path("plain.txt/x.png"), "plain.txt");
+    expect_rejected(small + "-o " + path("x.unknownformat"), "x.unknownformat");
+    for (const char* name : {"x.png", "x.unknownformat"}) EXPECT_FALSE(fs::exists(path(name)));
+
+    // A buffer outside the scene's folder is not read, even where it exists.
+    fs::create_directories(dir_ / "scene");
+    write("outside.bin", std::string(36, '\0'));
+    write("scene/escape.gltf",
+          R"({"asset":{"version":"2.0"},"buffers":[{"uri":"../outside.bin","byteLength":36}],)"
+          R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+          R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}],)"
+          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
+    expect_rejected("render " + path("scene/escape.gltf") + " -o " + path("escape.png"), "outside the scene's folder");
+    EXPECT_FALSE(fs::exists(path("escape.png")));
+}
+
+TEST_F(Cli, ReportsErrorAgainstTimeAsCsv) {
+    const std::string small = "render " + kCornell + " --width 24 --height 24 ";
+    ASSERT_EQ(run(small + "--spp 64 -o " + path("ref.exr")).exit_code, 0);
+    const test::ProcessResult r = run(small + "--spp 16 --reference " + path("ref.exr") + " --report " + path("r.csv") +
+                                " -o " + path("x.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string csv = test::read_file(path("r.csv"));
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "seconds,spp,mse,relmse,mae,relmse_estimate");
+    // A checkpoint at each doubling, every error column filled in but the
+    // estimate at 1 spp (one sample has no variance).
+    std::istringstream rows(csv.substr(csv.find('\n') + 1));
+    std::vector<int> spp;
+    for (std::string row; std::getline(rows, row);) {
+        spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
+        EXPECT_EQ(row.find(",,"), std::string::npos) << row;
+        EXPECT_EQ(row.back() == ',', spp.back() == 1) << row;
+    }
+    EXPECT_EQ(spp, (std::vector<int>{1, 2, 4, 8, 16}));
+
+    expect_rejected(small + "--spp 4 --reference " + path("ref.exr") + " --width 25 -o " + path("y.exr"), "ref.exr");
+    EXPECT_FALSE(fs::exists(path("y.exr")));
+}
+
+TEST_F(Cli, StopsAtTheTimeBudgetOrTheTargetError) {
+    const std::string small = "render " + kCornell + " --width 24 --height 24 ";
+    ASSERT_EQ(run(small + "--time 1 --report " + path("t.csv") + " -o " + path("t.exr")).exit_code, 0);
+    const std::string csv = test::read_file(path("t.csv"));
+    const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+    const double seconds = std::stod(last);
+    const int spp = std::stoi(last.substr(last.find(',') + 1));
+    EXPECT_GT(spp, 16) << "open-ended: --time without --spp is not capped at the default";
+    EXPECT_LT(seconds, 1.5) << csv;
+    auto in = OIIO::ImageInput::open(path("t.exr"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().get_int_attribute("wavefront:samplesPerPixel"), spp);
+
+    ASSERT_EQ(run(small + "--target-error 0.05 --report " + path("e.csv") + " -o " + path("e.exr")).exit_code, 0);
+    const std::string errors = test::read_file(path("e.csv"));
+    const std::string final_row = errors.substr(errors.rfind('\n', errors.size() - 2) + 1);
+    EXPECT_LT(std::stod(final_row.substr(final_row.rfind(',') + 1)), 0.05) << errors;
+}
+
+TEST_F(Cli, ChecksInByTimeWithReportEvery) {
+    ASSERT_EQ(run("render " + kCornell + " --width 24 --height 24 --time 1.2 --report-every 0.3 --report " +
+                  path("every.csv") + " -o " + path("every.exr"))
+                  .exit_code,
+              0);
+    std::istringstream rows(test::read_file(path("every.csv")));
+    std::string row;
+    std::getline(rows, row); // header
+    std::vector<int> spp;
+    std::vector<double> seconds;
+    while (std::getline(rows, row)) {
+        seconds.push_back(std::stod(row));
+        spp.push_back(std::stoi(row.substr(row.find(',') + 1)));
+    }
+    // The first round (1 spp) measures the rate; then a round that starts with
+    // more than 0.3 s of the budget left lasts about 0.3 s, and those after it
+    // fill what is left. The rate is re-measured each round and another test
+    // may share the cores, so a round may run long or short by a factor of a
+    // few: the bounds say "by time", not how precisely.
+    EXPECT_GE(spp.size(), 3u);
+    EXPECT_LE(spp.size(), 16u);
+    EXPECT_TRUE(std::is_sorted(spp.begin(), spp.end()));
+    for (size_t i = 2; i < seconds.size() && seconds[i - 1] < 1.2 - 0.3; ++i)
+        EXPECT_GT(seconds[i] - seconds[i - 1], 0.3 / 4) << "row " << i;
+}
+
+TEST_F(Cli, WritesBounceLayersToExr) {
+    const std::string small = "render " + kCornell + " --width 16 --height 16 --spp 2 --aov bounces ";
+    ASSERT_EQ(run(small + "-o " + path("layers.exr")).exit_code, 0);
+    auto in = OIIO::ImageInput::open(path("layers.exr"));
+    ASSERT_TRUE(in);
+    const std::vector<std::string>& names = in->spec().channelnames;
+    ASSERT_EQ(names.size(), 27u);
+    EXPECT_EQ(names[3], "bounce0.R");
+    EXPECT_EQ(names[26], "bounce7plus.B");
+    expect_rejected(small + "-o " + path("layers.png"), "layers.png");
+    expect_rejected("render " + kCornell + " --sampler halton", "--sampler halton");
+    expect_rejected("render " + kCornell + " --time -3", "--time -3");
+}
+
+TEST_F(Cli, EnvironmentFlagsLightAScene) {
+    Image map;
+    map.width = 16;
+    map.height = 8;
+    map.rgb.assign(size_t{map.width} * map.height * 3, 0.5f);
+    write_image(path("sky.exr"), map, ImageMetadata{});
+    const std::string box = WF_SOURCE_DIR "/../shared/scenes-real/Box/Box.gltf";
+    const std::string small = "render '" + box + "' --width 16 --height 16 --spp 2 ";
+    const test::ProcessResult lit =
+        run(small + "--env " + path("sky.exr") + " --env-rotate -30 --env-scale 2 -o " + path("lit.exr"));
+    ASSERT_EQ(lit.exit_code, 0) << lit.err;
+    EXPECT_NE(lit.out.find("an environment"), std::string::npos) << lit.out;
+    EXPECT_EQ(lit.err.find("no light"), std::string::npos) << lit.err;
+
+    // Without --env the box has no light: it is lit all the same, and says so.
+    const test::ProcessResult unlit = run(small + "-o " + path("unlit.exr"));
+    ASSERT_EQ(unlit.exit_code, 0) << unlit.err;
+    EXPECT_NE(unlit.err.find("no light"), std::string::npos) << unlit.err;
+    const Image image = read_image(path("unlit.exr"));
+    double sum = 0.0;
+    for (float v : image.rgb) sum += v;
+    EXPECT_GT(sum, 0.0);
+
+    const test::ProcessResult uniform = run(small + "--env-uniform 0.5 -o " + path("uniform.exr"));
+    ASSERT_EQ(uniform.exit_code, 0) << uniform.err;
+    EXPECT_NE(uniform.out.find("an environment"), std::string::npos) << uniform.out;
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-uniform 1 -o " + path("x.exr"), "--env-uniform");
+    expect_rejected(small + "--env " + path("missing.exr") + " -o " + path("x.exr"), "missing.exr");
+    expect_rejected(small + "--env-scale 2 -o " + path("x.exr"), "--env");
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-scale -1 -o " + path("x.exr"), "--env-scale");
+    expect_rejected(small + "--env " + path("sky.exr") + " --env-rotate nan -o " + path("x.exr"), "--env-rotate");
+}
+
+} // namespace
+} // namespace wf

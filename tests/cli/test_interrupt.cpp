@@ -1,0 +1,149 @@
+// test_interrupt.cpp — long renders as a user lives with them: Ctrl-C and
+// SIGTERM write what was computed and exit 128 + signal; --checkpoint-every
+// keeps a partial render on disk while it runs; --resume goes on from one to
+// the bytes of a render never stopped, and refuses one made with other options.
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "image/image_io.h"
+#include "film/partial_render.h"
+#include "support/test_support.h"
+
+namespace wf {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
+
+class Interrupt : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("wavefront-interrupt-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    // Starts `wavefront render` with `args` (one word each), its output in the test's folder.
+    pid_t start(const std::vector<std::string>& args) const {
+        const std::string out = path("stdout.txt"), err = path("stderr.txt");
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            std::vector<const char*> argv{WF_BINARY, "render"};
+            for (const std::string& a : args) argv.push_back(a.c_str());
+            argv.push_back(nullptr);
+            std::freopen(out.c_str(), "w", stdout);
+            std::freopen(err.c_str(), "w", stderr);
+            ::execv(WF_BINARY, const_cast<char* const*>(argv.data()));
+            ::_exit(127);
+        }
+        return pid;
+    }
+    // Waits for it; its exit code, or -1 when a signal ended it.
+    static int wait_for(pid_t pid) {
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    // Waits until `file` exists (at most 60 s).
+    static bool appears(const std::string& file) {
+        for (int i = 0; i < 600; ++i, std::this_thread::sleep_for(std::chrono::milliseconds(100)))
+            if (fs::exists(file)) return true;
+        return false;
+    }
+    std::vector<std::string> render_args(const std::string& output, uint32_t spp) const {
+        return {kCornell, "--width", "96", "--spp", std::to_string(spp), "--seed", "5", "--cache-dir",
+                path("cache"), "--pool-size", "1000", "--quiet", "-o", output};
+    }
+
+    fs::path dir_;
+};
+
+bool same_pixels(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+TEST_F(Interrupt, CtrlCWritesThePartialImageAndResumingGivesTheUninterruptedBytes) {
+    const std::string stopped = path("stopped.exr"), partial = partial_render_path(stopped);
+    std::vector<std::string> args = render_args(stopped, 1u << 20);
+    args.insert(args.end(), {"--checkpoint-every", "0.3"});
+    const pid_t pid = start(args);
+    ASSERT_TRUE(appears(partial)) << "no checkpoint while rendering";
+    // A checkpoint read while the render goes on is whole: files are renamed into place.
+    EXPECT_NO_THROW(read_partial_render(partial, {}));
+    ::kill(pid, SIGINT);
+    EXPECT_EQ(wait_for(pid), 128 + SIGINT) << test::read_file(path("stderr.txt"));
+    EXPECT_NE(test::read_file(path("stderr.txt")).find("--resume " + partial), std::string::npos);
+
+    const PartialRender p = read_partial_render(partial, {{"seed", "5"}});
+    const uint32_t least = *std::min_element(p.film.samples.begin(), p.film.samples.end());
+    const uint32_t most = *std::max_element(p.film.samples.begin(), p.film.samples.end());
+    ASSERT_GE(least, 1u);
+    // A slot owns pixels slot, slot + 1000, ...: the paths in flight were
+    // finished and none started after, so its pixels are at most one apart.
+    for (size_t pixel = 1000; pixel < p.film.samples.size(); ++pixel) {
+        ASSERT_LE(p.film.samples[pixel], p.film.samples[pixel - 1000]) << pixel;
+        ASSERT_LE(p.film.samples[pixel % 1000], p.film.samples[pixel] + 1) << pixel;
+    }
+    EXPECT_TRUE(test::all_finite(read_image(stopped)));
+
+    // Resumed to beyond what it had, against the same count rendered in one go.
+    const uint32_t spp = most + 3;
+    const std::string resumed = path("resumed.exr"), direct = path("direct.exr");
+    std::vector<std::string> resume = render_args(resumed, spp);
+    resume.insert(resume.end(), {"--resume", partial});
+    ASSERT_EQ(wait_for(start(resume)), 0) << test::read_file(path("stderr.txt"));
+    ASSERT_EQ(wait_for(start(render_args(direct, spp))), 0) << test::read_file(path("stderr.txt"));
+    EXPECT_TRUE(same_pixels(read_image(resumed), read_image(direct)));
+}
+
+TEST_F(Interrupt, ResumeRefusesAPartialRenderOfOtherOptions) {
+    const std::string stopped = path("stopped.exr"), partial = partial_render_path(stopped);
+    const pid_t pid = start(render_args(stopped, 1u << 20));
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    ::kill(pid, SIGTERM);
+    ASSERT_EQ(wait_for(pid), 128 + SIGTERM);
+    ASSERT_TRUE(fs::exists(partial));
+    std::vector<std::string> args = render_args(path("other.exr"), 64);
+    args[6] = "6"; // --seed
+    args.insert(args.end(), {"--resume", partial});
+    EXPECT_EQ(wait_for(start(args)), 2);
+    EXPECT_NE(test::read_file(path("stderr.txt")).find("was rendered with seed '5'"), std::string::npos)
+        << test::read_file(path("stderr.txt"));
+    EXPECT_FALSE(fs::exists(path("other.exr")));
+}
+
+TEST_F(Interrupt, ASecondCtrlCEndsAtOnce) {
+    const std::string output = path("out.exr");
+    const pid_t pid = start(render_args(output, 1u << 20));
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    ::kill(pid, SIGINT);
+    ::kill(pid, SIGINT);
+    const auto before = std::chrono::steady_clock::now();
+    EXPECT_EQ(wait_for(pid), 128 + SIGINT);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count(), 2.0);
+}
+
+TEST_F(Interrupt, AFinishedRenderLeavesNoPartialFile) {
+    const std::string output = path("out.png");
+    std::vector<std::string> args = render_args(output, 32);
+    args.insert(args.end(), {"--checkpoint-every", "0.01"});
+    ASSERT_EQ(wait_for(start(args)), 0) << test::read_file(path("stderr.txt"));
+    EXPECT_TRUE(fs::exists(output));
+    EXPECT_FALSE(fs::exists(partial_render_path(output)));
+    for (const auto& entry : fs::directory_iterator(dir_)) // nor a temporary one
+        EXPECT_EQ(entry.path().filename().string().find(".writing-"), std::string::npos) << entry.path();
+}
+
+} // namespace
+} // namespace wf

@@ -1,0 +1,77 @@
+// test_specialize.cpp — kernels compiled for a scene's features
+// (host/device/scene_features.h) render exactly what the generic kernels render:
+// the code left out only ever returned neutral values for such a scene, and
+// random numbers do not depend on the features. Bit for bit, on scenes that
+// between them switch every feature on and off.
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "scene/environment_map.h"
+#include "gltf/gltf_loader.h"
+#include "cli/render_command.h"
+#include "device/scene_features.h"
+#include "support/test_support.h"
+
+namespace wf {
+namespace {
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& camera, const std::string& what) {
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.seed = 3;
+    const RenderOutput specialized = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
+    settings.specialize = false;
+    const RenderOutput generic = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
+    test::report_measured(what + ": compiled for " + specialized.summary.features);
+    EXPECT_TRUE(same_bits(specialized.film.mean, generic.film.mean)) << what;
+    EXPECT_TRUE(same_bits(specialized.film.variance_of_mean, generic.film.variance_of_mean)) << what;
+    EXPECT_EQ(specialized.summary.stats.shadow_rays, generic.summary.stats.shadow_rays) << what;
+}
+
+TEST(Specialize, FeaturesAreWhatTheSceneUses) {
+    const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    EXPECT_EQ(describe_features(scene_features(cornell)), "emissive triangles");
+    EXPECT_EQ(feature_defines(scene_features(cornell)),
+              "-DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_EMISSIVE_TRIANGLES=1 "
+              "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0");
+    const Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
+    EXPECT_EQ(describe_features(scene_features(helmet)), "textures, normal maps, emissive triangles");
+    EXPECT_EQ(describe_features(SceneFeatures::all()),
+              "textures, normal maps, alpha mask, emissive triangles, punctual lights, environment");
+}
+
+TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
+    const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    expect_specialized_equals_generic(cornell, *cornell.camera, "Cornell box");
+
+    Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
+    helmet.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    expect_specialized_equals_generic(
+        helmet, test::camera_looking({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, 0.8f), "DamagedHelmet under a sky");
+
+    const Scene vase = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/TransmissionTest/TransmissionTest.gltf");
+    Scene lit_vase = vase;
+    light_unlit_scene(lit_vase);
+    expect_specialized_equals_generic(lit_vase, *vase.camera, "TransmissionTest (alpha mask)");
+
+    Scene floor;
+    test::add_quad(floor, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2},
+                   test::add_material(floor, glm::vec3(0.5f), glm::vec3(0.0f), false));
+    PunctualLight light{};
+    light.type = WF_PUNCTUAL_POINT;
+    light.position[1] = 1.0f;
+    for (float& i : light.intensity) i = 2.0f;
+    floor.punctual_lights.push_back(light);
+    expect_specialized_equals_generic(floor, test::camera_looking({0, 1, 2}, {0, -0.5f, -1}, {0, 1, 0}, 0.8f),
+                                      "floor under a point light");
+}
+
+} // namespace
+} // namespace wf

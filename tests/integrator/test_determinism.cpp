@@ -1,0 +1,120 @@
+// test_determinism.cpp — the image depends on the scene, the settings and the
+// seed, never on how the work was scheduled: pool sizes (dividing the pixel
+// count or not), local sizes, the wavefront's schedules and the megakernel
+// give the same bytes.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gltf/gltf_loader.h"
+#include "cli/render_command.h"
+#include "render/renderer.h"
+#include "support/test_support.h"
+
+namespace wf {
+namespace {
+
+RenderOutput render_file(const std::string& path, RenderSettings settings, ImageSize size = {40, 30}) {
+    const Scene scene = load_gltf(path);
+    settings.spp = 4;
+    return render_scene(test::cpu_device(), scene, *scene.camera, size, settings);
+}
+
+Image render_cornell(uint32_t pool_size, uint32_t local_size, uint32_t seed) {
+    RenderSettings settings;
+    settings.seed = seed;
+    settings.pool_size = pool_size;
+    settings.local_size = local_size;
+    return render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings).film.mean;
+}
+
+bool same_bytes(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+TEST(Determinism, PoolAndLocalSizeDoNotChangeOneBit) {
+    const Image reference = render_cornell(1200, 64, 3); // one slot per pixel
+    EXPECT_TRUE(same_bytes(reference, render_cornell(256, 64, 3)));
+    EXPECT_TRUE(same_bytes(reference, render_cornell(777, 64, 3))); // does not divide 1200
+    EXPECT_TRUE(same_bytes(reference, render_cornell(1200, 32, 3)));
+    EXPECT_FALSE(same_bytes(reference, render_cornell(1200, 64, 4))); // the seed does matter
+}
+
+// Stopping to look at the film between rounds changes nothing: a pixel's
+// samples are still traced and summed in order by its owning slot.
+TEST(Determinism, RoundsDoNotChangeOneBit) {
+    const Scene scene = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    RenderSettings settings;
+    settings.seed = 3;
+    settings.pool_size = 777;
+    Renderer progressive(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, settings);
+    for (uint32_t spp : {1u, 2u, 3u, 4u}) progressive.render_to(spp);
+    EXPECT_TRUE(same_bytes(render_cornell(1200, 64, 3), progressive.read().mean));
+}
+
+// Every schedule, queue-push strategy and the megakernel run the same stage functions in the same
+// order along each path, and a pixel's samples are still added in order by
+// its one slot: the bytes are the same, on a scene that uses every kind of
+// work (glossy and glass bounces, shadow rays, roulette) and with a pool
+// smaller than the image, so slots own several pixels.
+class ScheduleDeterminism : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
+    const std::string scene = std::string(WF_SOURCE_DIR "/scenes/") + GetParam();
+    RenderSettings settings;
+    settings.seed = 5;
+    settings.pool_size = 500;
+    const RenderOutput reference = render_file(scene, settings);
+    EXPECT_GT(reference.summary.stats.shadow_rays, 0u);
+    for (const Schedule schedule : {Schedule::Passes, Schedule::Fullest}) {
+        settings.schedule = schedule;
+        const RenderOutput r = render_file(scene, settings);
+        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << schedule_name(schedule);
+        EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << schedule_name(schedule);
+        EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
+        EXPECT_EQ(r.summary.stats.path_lengths, reference.summary.stats.path_lengths) << schedule_name(schedule);
+    }
+    settings.schedule = Schedule::Refill;
+    for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
+        settings.queue_push = push;
+        const RenderOutput r = render_file(scene, settings);
+        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << queue_push_name(push);
+        EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
+    }
+    settings.queue_push = QueuePush::Group;
+    settings.integrator = Integrator::Megakernel;
+    const RenderOutput mega = render_file(scene, settings);
+    EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));
+    EXPECT_EQ(mega.summary.stats.samples, reference.summary.stats.samples);
+    EXPECT_EQ(mega.summary.stats.closest_rays, reference.summary.stats.closest_rays);
+    EXPECT_EQ(mega.summary.stats.shadow_rays, reference.summary.stats.shadow_rays);
+    EXPECT_EQ(mega.summary.stats.path_lengths, reference.summary.stats.path_lengths);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ScheduleDeterminism,
+                         ::testing::Values("cornell-box.gltf", "cornell-teapot.gltf", "cornell-glass.gltf"));
+
+// The passes schedule starts no sample while a path of the pass is in
+// flight: whenever generate refills slots, no path was left to extend.
+TEST(Schedules, PassesStartNewSamplesOnlyOnceThePoolIsEmpty) {
+    RenderSettings settings;
+    settings.schedule = Schedule::Passes;
+    settings.pool_size = 300;
+    const RenderOutput r = render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings);
+    const std::vector<CounterSnapshot>& reads = r.summary.stats.counter_reads;
+    ASSERT_GT(reads.size(), 8u);
+    uint32_t passes = 0;
+    for (size_t i = 1; i < reads.size(); ++i) {
+        // A read with rays traced beyond what the previous read left to extend started new samples.
+        const bool started = reads[i].closest_rays > reads[i - 1].queues[WF_QUEUE_EXTEND];
+        if (started) {
+            ++passes;
+            EXPECT_EQ(reads[i - 1].queues[WF_QUEUE_EXTEND], 0u) << "read " << i;
+        }
+    }
+    // 1200 pixels, 300 slots, 4 spp: 16 passes, the first at the start of the round.
+    EXPECT_EQ(passes + 1, 16u);
+}
+
+} // namespace
+} // namespace wf

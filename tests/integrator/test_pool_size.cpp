@@ -1,0 +1,33 @@
+// test_pool_size.cpp — how many paths a render keeps in flight: the request
+// or the default, never more than the pixels (each slot owns whole pixels),
+// and by default no more than the device's memory holds.
+#include <gtest/gtest.h>
+
+#include "integrator/path_integrator.h"
+#include "integrator/path_pool.h"
+
+namespace wf {
+namespace {
+
+TEST(PoolSize, AtMostThePixelCount) {
+    std::string note;
+    EXPECT_EQ(choose_pool_size(0, 1u << 20, &note), 1u << 18); // the default
+    EXPECT_TRUE(note.empty());
+    EXPECT_EQ(choose_pool_size(5000, 1200, &note), 1200u);
+    EXPECT_NE(note.find("capped at the pixel count"), std::string::npos);
+}
+
+TEST(PoolSize, TheDefaultShrinksToWhatTheDeviceHolds) {
+    const size_t per_path = PathPool::bytes_per_path();
+    const size_t gib = size_t{1} << 30;
+    EXPECT_EQ(pool_that_fits(1u << 18, 8 * gib, 2 * gib, gib), 1u << 18); // room to spare
+    // 100 MiB left beside the scene: half of it holds this many paths.
+    const size_t left = 100u << 20;
+    EXPECT_EQ(pool_that_fits(1u << 20, gib + left, gib, gib), (left / 2) / per_path);
+    // The queue buffer is the largest per-path allocation: 5 indices a path.
+    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, 5 * 4 * 1000, 0), 1000u);
+    EXPECT_EQ(pool_that_fits(1u << 20, gib, gib, 2 * gib), 0u); // nothing left
+}
+
+} // namespace
+} // namespace wf
