@@ -6,24 +6,18 @@
  * the path state lives in the same arrays, so the two integrators give the
  * same bytes; what differs is only how work is grouped into launches (Laine,
  * Karras and Aila, "Megakernels Considered Harmful", HPG 2013). */
-#include "stages/generate.cl"
-#include "stages/intersect.cl"
-#include "stages/shade.cl"
-#include "stages/intersect_shadow.cl"
-#include "stages/roulette.cl"
-#include "stages/accumulate.cl"
+#include "kernel_params.h"
+#include "common/queue_push.h"
+#include "stages/generate.h"
+#include "stages/intersect.h"
+#include "stages/shade.h"
+#include "stages/intersect_shadow.h"
+#include "stages/roulette.h"
+#include "stages/accumulate.h"
 
 /* One launch traces one sample for every slot that has samples left. */
-__kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const BvhNode* nodes,
-                         __global const Triangle* triangles, __global const TriangleNormals* normals,
-                         __global const Material* materials, __global const LightEntry* lights,
-                         __global const PunctualLight* punctual, __global const float* environment_texels,
-                         __global const float* environment_distribution, WF_SCENE_TEXTURE_PARAMS,
-                         __global float4* layers, __global float4* layer_compensation, __global float4* film_sum,
-                         __global float4* film_compensation, __global float4* film_sum_squares,
-                         __global float4* film_squares_compensation, __global uint* film_samples) {
-    WF_BIND_PATH_STATE(path);
-    WF_BIND_SCENE_TEXTURES(textures);
+__kernel void megakernel(WF_STAGE_PARAMS) {
+    WF_BIND_STAGE_ARGS;
     __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     const uint slot = get_global_id(0);
@@ -32,21 +26,17 @@ __kernel void megakernel(WF_STAGE_PARAMS, const Camera camera, __global const Bv
     bool nonfinite = false;
     if (started) {
         for (;;) {
-            intersect_path(&path, slot, nodes, triangles, &textures);
+            intersect_path(&path, slot, &scene);
             ++closest_rays;
-            const uint outcome = shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
-                                            environment_texels, environment_distribution, &textures, layers,
-                                            layer_compensation);
+            const uint outcome = shade_path(&path, &params, slot, &scene, &film);
             bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
             if (outcome & WF_SHADE_SHADOW_RAY) {
-                continues = trace_shadow_ray(&path, &params, slot, nodes, triangles, &textures, layers,
-                                             layer_compensation);
+                continues = trace_shadow_ray(&path, &params, slot, &scene, &film);
                 ++shadow_rays;
             }
             if (!continues || !survives_roulette(&path, &params, slot)) break;
         }
-        nonfinite = accumulate_path(&path, &params, slot, film_sum, film_compensation, film_sum_squares,
-                                    film_squares_compensation, film_samples);
+        nonfinite = accumulate_path(&path, &params, slot, &film);
     }
     /* Counted once per work-group, outside the divergent loop (the adds hold barriers). */
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);

@@ -1,35 +1,42 @@
 /* path_state.h — the kernels' view of the path state declared in
- * include/wavefront/path_state.h.
- *
- * Every stage kernel starts its parameter list with WF_STAGE_PARAMS: one
- * __global pointer per path-state field (in declaration order), then the render
- * constants, the queues and the counters. The host sets the same arguments in
- * the same order (host/integrator/path_pool.cpp). WF_BIND_PATH_STATE gathers the field
- * pointers into one PathState so stage functions take a single argument. */
+ * include/wavefront/path_state.h: the PathState that gathers one slot array
+ * per field (bound by kernel_params.h), the only code that reads or writes
+ * the integer lanes packed into its float4s, and which pixel and sample a
+ * slot is tracing. */
 #ifndef WF_KERNEL_PATH_STATE_H
 #define WF_KERNEL_PATH_STATE_H
 
 #include "wavefront/path_state.h"
 
 #define WF_PATH_MEMBER(type, name, what) __global type* name;
-/* Parameters are prefixed so that a stage's locals (hit, pixel, ...) never
- * shadow them. */
-#define WF_PATH_PARAM(type, name, what) __global type* path_##name,
-#define WF_PATH_NAME(type, name, what) path_##name,
-
 typedef struct PathState {
     WF_PATH_STATE(WF_PATH_MEMBER)
 } PathState;
+#undef WF_PATH_MEMBER
 
-#define WF_STAGE_PARAMS                                                                      \
-    WF_PATH_STATE(WF_PATH_PARAM)                                                            \
-    const RenderParams params, __global uint *queues, volatile __global uint *counters
-
-#define WF_BIND_PATH_STATE(var) PathState var = {WF_PATH_STATE(WF_PATH_NAME)}
-
-/* What the w lanes hold (include/wavefront/path_state.h). */
+/* The packed lanes (include/wavefront/path_state.h says what each holds). */
 inline uint path_depth(const PathState* path, uint slot) { return as_uint(path->throughput[slot].w); }
+inline void set_path_throughput(PathState* path, uint slot, float3 throughput, uint depth) {
+    path->throughput[slot] = (float4)(throughput, as_float(depth));
+}
 inline uint path_samples_started(const PathState* path, uint slot) { return as_uint(path->radiance[slot].w); }
+/* A new sample: no radiance yet, and one more sample started. */
+inline void start_path_radiance(PathState* path, uint slot, uint samples_started) {
+    path->radiance[slot] = (float4)(0.0f, 0.0f, 0.0f, as_float(samples_started));
+}
+inline int path_hit_triangle(const PathState* path, uint slot) { return as_int(path->hit[slot].w); }
+inline void set_path_hit(PathState* path, uint slot, float t, float u, float v, int triangle) {
+    path->hit[slot] = (float4)(t, u, v, as_float(triangle));
+}
+/* The light a pending shadow ray delivers if nothing blocks it, the bounce
+ * layer it joins, and whether the path goes on after it. */
+inline void set_shadow_light(PathState* path, uint slot, float3 radiance, uint layer, bool then_continue) {
+    path->shadow_radiance[slot] = (float4)(radiance, as_float(layer | (then_continue ? WF_SHADOW_THEN_CONTINUE : 0u)));
+}
+inline uint shadow_light_layer(float4 shadow_radiance) { return as_uint(shadow_radiance.w) & ~WF_SHADOW_THEN_CONTINUE; }
+inline bool shadow_then_continues(float4 shadow_radiance) {
+    return (as_uint(shadow_radiance.w) & WF_SHADOW_THEN_CONTINUE) != 0u;
+}
 
 /* Slot i owns pixels i, i + pool, i + 2·pool, ... and takes them in turn, a
  * sample of each: its n-th sample (from 0) is sample n / owned of pixel

@@ -66,25 +66,26 @@ private:
 };
 
 // What shapes the image, for every output's metadata and for --resume to
-// check: a partial render continues only under the same values.
-ImageOptions image_options(const RenderOptions& o, ImageSize size, uint32_t pool_size) {
-    auto choice = [](uint32_t i, std::initializer_list<const char*> names) { return *(names.begin() + i); };
+// check: a partial render continues only under the same values. Without a
+// pool size, all the others.
+ImageOptions image_options(const RenderOptions& o, ImageSize size, std::optional<uint32_t> pool_size) {
     const RenderSettings& s = o.settings;
-    return {{"scene", o.scene},
+    ImageOptions options = {{"scene", o.scene},
             {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
             {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
             {"seed", std::to_string(s.seed)},
             {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
-            {"light-sampling", choice(s.light_sampling, {"bsdf", "nee", "mis"})},
-            {"hemisphere", choice(s.hemisphere, {"uniform", "cosine"})},
-            {"sampler", choice(s.sampler, {"independent", "sobol"})},
+            {"light-sampling", choice_name(kLightSamplingNames, s.light_sampling)},
+            {"hemisphere", choice_name(kHemisphereNames, s.hemisphere)},
+            {"sampler", choice_name(kSamplerNames, s.sampler)},
             {"env", o.environment.empty() ? "none" : o.environment},
             {"env-rotate", std::to_string(o.environment_rotate)},
             {"env-scale", std::to_string(o.environment_scale)},
             {"env-uniform", std::to_string(o.environment_uniform)},
             {"aov", s.bounce_layers ? "bounces" : "none"},
-            {"pool-size", std::to_string(pool_size)},
             {"version", WF_VERSION}};
+    if (pool_size) options.emplace_back("pool-size", std::to_string(*pool_size));
+    return options;
 }
 
 std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
@@ -136,14 +137,15 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
-    std::string pool_note;
-    const uint32_t pool_size = choose_pool_size(options.settings.pool_size, size.width * size.height, &pool_note);
-    if (!pool_note.empty()) log << "note: " << pool_note << "\n";
-    const ImageOptions shaping = image_options(options, size, pool_size);
     if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
+    // Every option but the pool size is checked before the long set-up; the
+    // pool, which the renderer chooses, right after it.
     std::optional<PartialRender> resumed;
-    if (!options.resume.empty()) resumed = read_partial_render(options.resume, shaping);
+    if (!options.resume.empty()) {
+        resumed = read_partial_render(options.resume);
+        check_partial_options(*resumed, options.resume, image_options(options, size, std::nullopt));
+    }
     if (options.settings.bounce_layers && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
     std::optional<Image> reference;
@@ -166,6 +168,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
+    const ImageOptions shaping = image_options(options, size, renderer.stats().pool_size);
+    if (resumed) check_partial_options(*resumed, options.resume, shaping);
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;

@@ -3,11 +3,11 @@
 // π · area · mean(Le), doubled when it emits from both faces.
 #include "device/device_scene.h"
 
-#include "device/device_buffer.h"
-
 #include <algorithm>
 
 #include "base/alias_table.h"
+#include "device/device_buffer.h"
+#include "scene/environment_map.h"
 
 namespace wf {
 namespace {
@@ -95,7 +95,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         }
     }
     d.emissive_triangles = static_cast<uint32_t>(d.lights.size());
-    d.textures = make_device_texture_data(scene, bvh.order);
+    add_texture_data(scene, bvh.order, d);
     const Bounds bounds = scene.bounds();
     d.scene_diameter = bounds.empty() ? 0.0f : glm::length(bounds.extent());
     const double radius = 0.5 * d.scene_diameter;
@@ -103,12 +103,15 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     for (size_t i = 0; i < d.punctual.size(); ++i)
         if (const double power = punctual_power(d.punctual[i], radius); power > 0.0)
             add_light(WF_LIGHT_PUNCTUAL, static_cast<uint32_t>(i), power);
-    d.environment = scene.environment;
-    if (d.environment)
-        if (const double power = environment_power(*d.environment, radius); power > 0.0) {
+    if (scene.environment) {
+        d.environment = scene.environment->header;
+        d.environment_texels = scene.environment->texels;
+        d.environment_distribution = scene.environment->distribution;
+        if (const double power = environment_power(*scene.environment, radius); power > 0.0) {
             d.environment_light = static_cast<uint32_t>(d.lights.size());
             add_light(WF_LIGHT_ENVIRONMENT, 0u, power);
         }
+    }
     if (!light_weights.empty()) {
         const std::vector<AliasEntry> table = build_alias_table(light_weights);
         for (size_t i = 0; i < table.size(); ++i) {
@@ -133,33 +136,27 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
 }
 
 size_t DeviceSceneData::bytes() const {
-    return nodes.size() * sizeof(BvhNode) + triangles.size() * sizeof(Triangle) +
-           normals.size() * sizeof(TriangleNormals) + materials.size() * sizeof(Material) +
-           lights.size() * sizeof(LightEntry) + punctual.size() * sizeof(PunctualLight) +
-           (environment ? (environment->texels.size() + environment->distribution.size()) * sizeof(float) : 0) +
-           textures.bytes();
+    size_t bytes = 0;
+#define WF_ADD_BYTES(type, name, what) bytes += name.size() * sizeof(type);
+    WF_SCENE_BUFFERS(WF_ADD_BYTES)
+#undef WF_ADD_BYTES
+    return bytes;
 }
 
 size_t DeviceSceneData::largest_buffer_bytes() const {
-    return std::max({nodes.size() * sizeof(BvhNode), triangles.size() * sizeof(Triangle),
-                     normals.size() * sizeof(TriangleNormals), materials.size() * sizeof(Material),
-                     lights.size() * sizeof(LightEntry),
-                     environment ? environment->texels.size() * sizeof(float) : size_t{0},
-                     textures.texels.size() * sizeof(uint32_t)});
+    size_t largest = 0;
+#define WF_LARGEST(type, name, what) largest = std::max(largest, name.size() * sizeof(type));
+    WF_SCENE_BUFFERS(WF_LARGEST)
+#undef WF_LARGEST
+    return largest;
 }
 
 DeviceScene upload_scene(const cl::Context& context, const DeviceSceneData& data) {
     DeviceScene s;
-    s.nodes = upload_read_only(context, data.nodes, s.bytes);
-    s.triangles = upload_read_only(context, data.triangles, s.bytes);
-    s.normals = upload_read_only(context, data.normals, s.bytes);
-    s.materials = upload_read_only(context, data.materials, s.bytes);
-    s.lights = upload_read_only(context, data.lights, s.bytes);
-    s.punctual = upload_read_only(context, data.punctual, s.bytes);
-    s.environment = upload_environment(context, data.environment ? *data.environment : constant_environment(0.0f));
-    s.bytes += s.environment.bytes;
-    s.textures = upload_textures(context, data.textures);
-    s.bytes += s.textures.bytes;
+#define WF_UPLOAD(type, name, what) s.name = upload_read_only(context, data.name, s.bytes);
+    WF_SCENE_BUFFERS(WF_UPLOAD)
+#undef WF_UPLOAD
+    s.environment = data.environment;
     s.light_count = static_cast<uint32_t>(data.lights.size());
     s.environment_light = data.environment_light;
     s.scene_diameter = data.scene_diameter;

@@ -1,18 +1,12 @@
-// device_textures.cpp — flattening the materials' texture fields, and upload.
-#include "device/device_textures.h"
-
-#include "device/device_buffer.h"
+// device_textures.cpp — the texture part of the device scene
+// (add_texture_data in device_scene.h): each material's texture references
+// and parameters flattened in material order, and per-triangle texture
+// coordinates and tangents in BVH order, only for scenes with textures.
+#include "device/device_scene.h"
 
 namespace wf {
 
-size_t DeviceTextureData::bytes() const {
-    return infos.size() * sizeof(TextureInfo) + texels.size() * sizeof(uint32_t) +
-           refs.size() * sizeof(TextureRef) + params.size() * sizeof(MaterialTextureParams) +
-           texcoords.size() * sizeof(TriangleTexcoords) + tangents.size() * sizeof(TriangleTangents);
-}
-
-DeviceTextureData make_device_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_order) {
-    DeviceTextureData d;
+void add_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_order, DeviceSceneData& d) {
     // Coordinates a scene lacks (a primitive without TEXCOORD_n) read as (0, 0).
     const bool textured = !scene.textures.infos.empty();
     if (textured) {
@@ -36,35 +30,17 @@ DeviceTextureData make_device_texture_data(const Scene& scene, const std::vector
             d.tangents.push_back(tg);
         }
     }
-    d.infos = scene.textures.infos;
+    d.texture_infos = scene.textures.infos;
     d.texels = scene.textures.texels;
     for (const SceneMaterial& m : scene.materials) {
-        d.refs.insert(d.refs.end(), m.textures.begin(), m.textures.end());
+        d.texture_refs.insert(d.texture_refs.end(), m.textures.begin(), m.textures.end());
         MaterialTextureParams p{};
         p.normal_scale = m.normal_scale;
         p.alpha_mode = m.alpha_mode;
         p.alpha_cutoff = m.alpha_cutoff;
         p.base_alpha = m.base_alpha;
-        d.params.push_back(p);
+        d.material_textures.push_back(p);
     }
-    return d;
-}
-
-DeviceTextures upload_textures(const cl::Context& context, const DeviceTextureData& data) {
-    DeviceTextures t;
-    t.infos = upload_read_only(context, data.infos, t.bytes);
-    t.texels = upload_read_only(context, data.texels, t.bytes);
-    t.refs = upload_read_only(context, data.refs, t.bytes);
-    t.params = upload_read_only(context, data.params, t.bytes);
-    t.texcoords = upload_read_only(context, data.texcoords, t.bytes);
-    t.tangents = upload_read_only(context, data.tangents, t.bytes);
-    return t;
-}
-
-cl_uint set_texture_args(cl::Kernel& kernel, cl_uint first, const DeviceTextures& t) {
-    for (const cl::Buffer* buffer : {&t.infos, &t.texels, &t.refs, &t.params, &t.texcoords, &t.tangents})
-        kernel.setArg(first++, *buffer);
-    return first;
 }
 
 } // namespace wf

@@ -8,13 +8,10 @@
 
 #include <CL/opencl.hpp>
 
-namespace wf {
+#include "image/image.h"
+#include "wavefront/film_buffers.h"
 
-struct Image {
-    uint32_t width = 0;
-    uint32_t height = 0;
-    std::vector<float> rgb; // 3 floats per pixel, row-major from the top-left
-};
+namespace wf {
 
 // The sums and counts exactly as the kernels hold them: what a render needs to
 // go on where it stopped (host/film/partial_render.h). xyz of each float4 are used.
@@ -48,10 +45,11 @@ public:
     size_t bytes() const { return bytes_for(width, height, bounce_layers); }
 
     uint32_t width, height, bounce_layers;
-    cl::Buffer sum, compensation;                   // float4 per pixel: the running sum in two parts
-    cl::Buffer sum_squares, squares_compensation;   // float4 per pixel
-    cl::Buffer samples;                             // uint per pixel
-    cl::Buffer layers, layer_compensation;          // float4 per pixel and layer (one element when none)
+    // One buffer per entry of include/wavefront/film_buffers.h, by its name
+    // (the layers hold one element when there are none).
+#define WF_FILM_MEMBER(type, name, what) cl::Buffer name;
+    WF_FILM_BUFFERS(WF_FILM_MEMBER)
+#undef WF_FILM_MEMBER
 };
 
 } // namespace wf

@@ -40,7 +40,19 @@ void write_partial_render(const std::string& path, const FilmState& film, const 
     write_image(path, resolve(film).mean, metadata, layers);
 }
 
-PartialRender read_partial_render(const std::string& path, const ImageOptions& expected) {
+void check_partial_options(const PartialRender& partial, const std::string& path, const ImageOptions& expected) {
+    for (const auto& [name, value] : expected) {
+        // A C++17 lambda cannot capture a structured binding (clang rejects it), only a copy of it.
+        const auto it = std::find_if(partial.options.begin(), partial.options.end(),
+                                     [&name = name](const auto& o) { return o.first == name; });
+        const std::string found = it == partial.options.end() ? "nothing" : "'" + it->second + "'";
+        if (it == partial.options.end() || it->second != value)
+            throw InputError(path + ": was rendered with " + name + " " + found + ", this render has '" + value +
+                             "'");
+    }
+}
+
+PartialRender read_partial_render(const std::string& path) {
     const ChannelImage image = read_channels(path);
     auto channel = [&](const std::string& name) {
         const auto it = std::find(image.channel_names.begin(), image.channel_names.end(), name);
@@ -48,15 +60,6 @@ PartialRender read_partial_render(const std::string& path, const ImageOptions& e
             throw InputError(path + ": not a partial render (no channel " + name + ")");
         return static_cast<size_t>(it - image.channel_names.begin());
     };
-    for (const auto& [name, value] : expected) {
-        // A C++17 lambda cannot capture a structured binding (clang rejects it), only a copy of it.
-        const auto it = std::find_if(image.options.begin(), image.options.end(),
-                                     [&name = name](const auto& o) { return o.first == name; });
-        const std::string found = it == image.options.end() ? "nothing" : "'" + it->second + "'";
-        if (it == image.options.end() || it->second != value)
-            throw InputError(path + ": was rendered with " + name + " " + found + ", this render has '" + value +
-                             "'");
-    }
     PartialRender partial;
     FilmState& film = partial.film;
     film.width = image.width;

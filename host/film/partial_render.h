@@ -24,8 +24,11 @@ std::string partial_render_path(const std::string& output);
 // Written atomically (image_io.h). Throws InputError naming the file.
 void write_partial_render(const std::string& path, const FilmState& film, const ImageMetadata& metadata);
 
-// Throws InputError naming the file when it is not a partial render, and when
-// its options differ from `expected`, naming the first that differs.
-PartialRender read_partial_render(const std::string& path, const ImageOptions& expected);
+// Throws InputError naming the file when it is not a partial render.
+PartialRender read_partial_render(const std::string& path);
+
+// Throws InputError naming the file (`path`) and the first of `expected`'s
+// options that the partial render was not written with.
+void check_partial_options(const PartialRender& partial, const std::string& path, const ImageOptions& expected);
 
 } // namespace wf

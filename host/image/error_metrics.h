@@ -7,7 +7,7 @@
 // mean and y by x, its only available value.
 #pragma once
 
-#include "film/film.h"
+#include "image/image.h"
 
 namespace wf {
 

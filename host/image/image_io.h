@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "film/film.h"
+#include "image/image.h"
 
 namespace wf {
 

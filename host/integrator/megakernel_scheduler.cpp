@@ -14,14 +14,7 @@ MegakernelScheduler::MegakernelScheduler(const OpenClDevice& device, const cl::P
 void MegakernelScheduler::render_to(uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
     params_.spp = spp;
-    // The arguments of kernels/megakernel.cl, in order.
-    const cl_uint after_scene =
-        set_kernel_args(kernel_, pool_.set_stage_args(kernel_, params_), camera_, scene_.nodes, scene_.triangles,
-                        scene_.normals, scene_.materials, scene_.lights, scene_.punctual, scene_.environment.texels,
-                        scene_.environment.distribution);
-    set_kernel_args(kernel_, set_texture_args(kernel_, after_scene, scene_.textures), film_.layers,
-                    film_.layer_compensation, film_.sum, film_.compensation, film_.sum_squares,
-                    film_.squares_compensation, film_.samples);
+    set_stage_args(kernel_, stage_args());
     device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
     // Rounds always run to their end, so every pixel now has the same count.
     const uint64_t wanted = uint64_t{params_.pixel_count} * spp;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 
 #include "base/errors.h"
 
@@ -21,26 +22,6 @@ double event_seconds(const cl::Event& e) {
 }
 
 } // namespace
-
-const char* integrator_name(Integrator integrator) {
-    return integrator == Integrator::Megakernel ? "megakernel" : "wavefront";
-}
-
-const char* schedule_name(Schedule schedule) {
-    switch (schedule) {
-    case Schedule::Passes: return "passes";
-    case Schedule::Fullest: return "fullest";
-    default: return "refill";
-    }
-}
-
-const char* queue_push_name(QueuePush push) {
-    switch (push) {
-    case QueuePush::Atomic: return "atomic";
-    case QueuePush::Scan: return "scan";
-    default: return "group";
-    }
-}
 
 double RenderStats::kernel_seconds() const {
     return std::accumulate(stages.begin(), stages.end(), 0.0,
@@ -77,7 +58,7 @@ uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocati
 PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
                                const RenderSettings& settings)
     : device_(device), settings_(settings), scene_(scene), camera_(camera),
-      pool_(device.context, choose_pool_size(settings.pool_size, camera.width * camera.height, nullptr)),
+      pool_(device.context, settings.pool_size),
       film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers) {
     params_.pixel_count = camera.width * camera.height;
     params_.pool_size = pool_.size();
@@ -91,7 +72,9 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
     params_.bounce_layers = settings.bounce_layers;
     params_.environment_light = scene.environment_light;
     params_.scene_diameter = scene.scene_diameter;
-    params_.environment = scene.environment.header;
+    params_.environment = scene.environment;
+    if (settings.pool_size == 0 || settings.pool_size > params_.pixel_count)
+        throw std::logic_error("an integrator's pool must be chosen first (render/renderer.h)");
     if (settings.local_size < WF_PATH_LENGTH_BUCKETS)
         throw InputError("local size " + std::to_string(settings.local_size) + " is below " +
                          std::to_string(WF_PATH_LENGTH_BUCKETS) + ", the path-length histogram's buckets");

@@ -24,49 +24,12 @@
 #include "film/film.h"
 #include "device/opencl_device.h"
 #include "integrator/path_pool.h"
+#include "integrator/render_settings.h"
+#include "integrator/stage_args.h"
 #include "wavefront/path_state.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {
-
-enum class Integrator { Wavefront, Megakernel };
-
-// In which order the wavefront launches its stages (wavefront_scheduler.cpp).
-enum class Schedule {
-    Refill,  // every stage once per iteration, freed slots refilled at once
-    Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts
-    Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
-};
-
-// How the kernels append to queues and counters (kernels/common/queue_push.h),
-// in the order of its WF_PUSH_* values.
-enum class QueuePush { Group, Atomic, Scan };
-
-struct RenderSettings {
-    uint32_t spp = 16;
-    uint32_t max_depth = WF_UNLIMITED_DEPTH;
-    uint32_t seed = 0;
-    uint32_t pool_size = 0; // 0: chosen from the image and the device
-    uint32_t roulette_depth = 3;
-    uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
-    uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
-    uint32_t hemisphere = WF_HEMISPHERE_COSINE;
-    uint32_t sampler = WF_SAMPLER_INDEPENDENT;
-    uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
-    bool specialize = true;     // compile the kernels for the scene's features (host/device/scene_features.h)
-    std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
-    Integrator integrator = Integrator::Wavefront;
-    Schedule schedule = Schedule::Refill; // for the wavefront integrator
-    QueuePush queue_push = QueuePush::Group;
-    bool sort_materials = false; // reorder the extension queue by material before shade
-    // While it holds non-zero, no sample starts: the paths in flight end and
-    // the round returns early, each slot's pixels then one sample apart at most.
-    const std::atomic<int>* stop = nullptr;
-};
-
-const char* integrator_name(Integrator integrator);
-const char* schedule_name(Schedule schedule);
-const char* queue_push_name(QueuePush push);
 
 enum Stage {
     STAGE_GENERATE,
@@ -123,12 +86,6 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string*
 // allocation may be; 0 when not even one path fits.
 uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes);
 
-// Sets consecutive arguments of `kernel` from index `first` on; returns the next index.
-template <class... Args> cl_uint set_kernel_args(cl::Kernel& kernel, cl_uint first, const Args&... args) {
-    (kernel.setArg(first++, args), ...);
-    return first;
-}
-
 class PathIntegrator {
 public:
     virtual ~PathIntegrator() = default;
@@ -149,6 +106,8 @@ protected:
     PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
                    const RenderSettings& settings);
 
+    // What every kernel's shared parameters are bound to (stage_args.h).
+    StageArgs stage_args() const { return StageArgs{pool_, params_, camera_, scene_, film_}; }
     // Enqueues `kernel` over `items` work-items, rounded up to whole
     // work-groups; its time is added to `stage` at the next read_counters().
     void launch(Stage stage, const cl::Kernel& kernel, uint32_t items);

@@ -43,13 +43,4 @@ void PathPool::restore_samples_started(const cl::CommandQueue& queue, const std:
     queue.enqueueWriteBuffer(field(PathField::radiance), CL_TRUE, 0, sizeof(cl_float4) * size_, radiance.data());
 }
 
-cl_uint PathPool::set_stage_args(cl::Kernel& kernel, const RenderParams& params) const {
-    cl_uint index = 0;
-    for (const cl::Buffer& field : fields_) kernel.setArg(index++, field);
-    kernel.setArg(index++, params);
-    kernel.setArg(index++, queues);
-    kernel.setArg(index++, counters);
-    return index;
-}
-
 } // namespace wf

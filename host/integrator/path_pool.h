@@ -22,16 +22,6 @@ class PathPool {
 public:
     PathPool(const cl::Context& context, uint32_t pool_size);
 
-#define WF_COUNT_PATH_FIELD(type, name, what) +1
-    // How many arguments every stage kernel begins with (WF_STAGE_PARAMS in
-    // kernels/path_state.h): one per path-state field, then params, queues, counters.
-    static constexpr cl_uint kSharedStageArgs = 3 WF_PATH_STATE(WF_COUNT_PATH_FIELD);
-#undef WF_COUNT_PATH_FIELD
-
-    // Sets those shared arguments; returns kSharedStageArgs, the index of the
-    // first stage-specific one.
-    cl_uint set_stage_args(cl::Kernel& kernel, const RenderParams& params) const;
-
     // Zeroes every path-state field, before a render starts.
     void clear(const cl::CommandQueue& queue) const;
     // Sets how many samples each slot has started (a resumed render), in the
@@ -39,6 +29,7 @@ public:
     void restore_samples_started(const cl::CommandQueue& queue, const std::vector<uint32_t>& started) const;
 
     const cl::Buffer& field(PathField f) const { return fields_[static_cast<size_t>(f)]; }
+    const std::vector<cl::Buffer>& fields() const { return fields_; } // in WF_PATH_STATE order
 
     uint32_t size() const { return size_; }
     // Device memory per path slot: its state (state_bytes_per_path) plus one entry in every queue.

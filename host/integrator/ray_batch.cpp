@@ -9,9 +9,6 @@
 namespace wf {
 namespace {
 
-// The renderer's default local size (RenderSettings::local_size).
-constexpr size_t kLocalSize = 64;
-
 std::vector<cl_float4> to_float4(const std::vector<BatchRay>& rays, glm::vec3 BatchRay::*member) {
     std::vector<cl_float4> v(rays.size());
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -33,8 +30,8 @@ RenderParams batch_params(uint32_t count) {
 RayBatch::RayBatch(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
                    const std::vector<BatchRay>& rays)
     : device_(device), scene_(scene), pool_(device.context, static_cast<uint32_t>(rays.size())),
-      params_(batch_params(pool_.size())), intersect_(program, "intersect"), shadow_(program, "intersect_shadow"),
-      no_layers_(device.context, CL_MEM_READ_WRITE, sizeof(cl_float4)) {
+      params_(batch_params(pool_.size())), film_(device.context, device.queue, 1, 1, 0),
+      intersect_(program, "intersect"), shadow_(program, "intersect_shadow") {
     pool_.clear(device.queue); // no slot holds anything a kernel could trip on
     const size_t bytes = rays.size() * sizeof(cl_float4);
     const std::vector<cl_float4> origins = to_float4(rays, &BatchRay::origin);
@@ -46,8 +43,8 @@ RayBatch::RayBatch(const OpenClDevice& device, const cl::Program& program, const
 RayBatch::RayBatch(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
                    const Camera& camera, uint32_t seed)
     : device_(device), scene_(scene), pool_(device.context, camera.width * camera.height),
-      params_(batch_params(pool_.size())), intersect_(program, "intersect"), shadow_(program, "intersect_shadow"),
-      no_layers_(device.context, CL_MEM_READ_WRITE, sizeof(cl_float4)) {
+      params_(batch_params(pool_.size())), camera_(camera), film_(device.context, device.queue, 1, 1, 0),
+      intersect_(program, "intersect"), shadow_(program, "intersect_shadow") {
     // A pool as large as the image: slot i starts sample 0 of pixel i.
     RenderParams params = params_;
     params.spp = 1;
@@ -55,7 +52,7 @@ RayBatch::RayBatch(const OpenClDevice& device, const cl::Program& program, const
     pool_.clear(device.queue);
     queue_all(WF_QUEUE_REGENERATE);
     cl::Kernel generate(program, "generate");
-    generate.setArg(pool_.set_stage_args(generate, params), camera);
+    set_stage_args(generate, StageArgs{pool_, params, camera_, scene_, film_});
     launch(generate);
 }
 
@@ -84,9 +81,10 @@ void RayBatch::queue_all(uint32_t queue) const {
 
 double RayBatch::launch(cl::Kernel& kernel) const {
     // Rounded up to whole work-groups; the kernel stops at the queue length.
-    const size_t global = (size_t{size()} + kLocalSize - 1) / kLocalSize * kLocalSize;
+    const size_t local = RenderSettings{}.local_size;
+    const size_t global = (size_t{size()} + local - 1) / local * local;
     cl::Event event;
-    device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(kLocalSize), nullptr,
+    device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(local), nullptr,
                                        &event);
     event.wait();
     const auto start = event.getProfilingInfo<CL_PROFILING_COMMAND_START>();
@@ -96,10 +94,7 @@ double RayBatch::launch(cl::Kernel& kernel) const {
 
 ClosestHits RayBatch::closest_hits() const {
     queue_all(WF_QUEUE_EXTEND);
-    const cl_uint next = pool_.set_stage_args(intersect_, params_);
-    intersect_.setArg(next, scene_.nodes);
-    intersect_.setArg(next + 1, scene_.triangles);
-    set_texture_args(intersect_, next + 2, scene_.textures);
+    set_stage_args(intersect_, StageArgs{pool_, params_, camera_, scene_, film_});
     ClosestHits result;
     result.kernel_seconds = launch(intersect_);
     result.hits.resize(size());
@@ -118,12 +113,7 @@ AnyHits RayBatch::any_hits() const {
     q.enqueueFillBuffer(pool_.field(PathField::shadow_radiance), cl_float4{{1.0f, 1.0f, 1.0f, 0.0f}}, 0, bytes);
     q.enqueueFillBuffer(pool_.field(PathField::radiance), cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0, bytes);
     queue_all(WF_QUEUE_SHADOW);
-    const cl_uint next = pool_.set_stage_args(shadow_, params_);
-    shadow_.setArg(next, scene_.nodes);
-    shadow_.setArg(next + 1, scene_.triangles);
-    const cl_uint after = set_texture_args(shadow_, next + 2, scene_.textures);
-    shadow_.setArg(after, no_layers_);
-    shadow_.setArg(after + 1, no_layers_);
+    set_stage_args(shadow_, StageArgs{pool_, params_, camera_, scene_, film_});
     AnyHits result;
     result.kernel_seconds = launch(shadow_);
     std::vector<cl_float4> radiance(size());

@@ -13,6 +13,8 @@
 
 #include "device/device_scene.h"
 #include "device/opencl_device.h"
+#include "film/film.h"
+#include "integrator/path_integrator.h"
 #include "integrator/path_pool.h"
 
 namespace wf {
@@ -63,8 +65,9 @@ private:
     const DeviceScene& scene_;
     PathPool pool_;
     RenderParams params_{};
+    Camera camera_{};
+    Film film_; // a pixel with no bounce layers: the stages bind one, and these launches never write it
     mutable cl::Kernel intersect_, shadow_;
-    cl::Buffer no_layers_; // intersect_shadow's bounce-layer film, never written with bounce_layers 0
 };
 
 } // namespace wf

@@ -15,9 +15,9 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
         count_materials_ = cl::Kernel(program, "count_materials");
         scan_materials_ = cl::Kernel(program, "scan_materials");
         scatter_materials_ = cl::Kernel(program, "scatter_materials");
-        key_counts_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * kSortKeys);
+        key_counts_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_SORT_KEYS);
         sorted_ = cl::Buffer(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * size_t{pool_.size()});
-        device.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+        device.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * WF_SORT_KEYS);
     }
 }
 
@@ -29,44 +29,21 @@ void WavefrontScheduler::extend(uint32_t items) {
         PathIntegrator::launch(STAGE_SORT, scatter_materials_, items);
         // The extension queue is the first region of the queue buffer.
         device_.queue.enqueueCopyBuffer(sorted_, pool_.queues, 0, 0, sizeof(cl_uint) * size_t{items});
-        device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * kSortKeys);
+        device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * WF_SORT_KEYS);
     }
     launch(STAGE_SHADE, items);
 }
 
-// Every kernel's arguments: the shared ones (WF_STAGE_PARAMS), then its own.
-// The render constants change from round to round.
+// Every kernel's arguments: the shared ones (stage_args.h), then the sort's
+// own. The render constants change from round to round.
 void WavefrontScheduler::set_stage_args() {
-    auto shared_then = [this](Stage s) -> cl::Kernel& {
-        cl::Kernel& k = kernels_[s];
-        pool_.set_stage_args(k, params_);
-        return k;
-    };
-    const cl_uint own = PathPool::kSharedStageArgs;
-    set_kernel_args(shared_then(STAGE_GENERATE), own, camera_);
-    cl::Kernel& intersect = shared_then(STAGE_INTERSECT);
-    set_texture_args(intersect, set_kernel_args(intersect, own, scene_.nodes, scene_.triangles), scene_.textures);
-    cl::Kernel& shade = shared_then(STAGE_SHADE);
-    const cl_uint shade_textures = set_kernel_args(shade, own, scene_.triangles, scene_.normals, scene_.materials,
-                                                   scene_.lights, scene_.punctual, scene_.environment.texels,
-                                                   scene_.environment.distribution);
-    set_kernel_args(shade, set_texture_args(shade, shade_textures, scene_.textures), film_.layers,
-                    film_.layer_compensation);
-    cl::Kernel& shadow = shared_then(STAGE_INTERSECT_SHADOW);
-    set_kernel_args(shadow,
-                    set_texture_args(shadow, set_kernel_args(shadow, own, scene_.nodes, scene_.triangles),
-                                     scene_.textures),
-                    film_.layers, film_.layer_compensation);
-    shared_then(STAGE_ROULETTE);
+    const StageArgs shared = stage_args();
+    for (cl::Kernel& k : kernels_) wf::set_stage_args(k, shared);
     if (settings_.sort_materials) {
-        set_kernel_args(count_materials_, pool_.set_stage_args(count_materials_, params_), scene_.triangles,
-                        key_counts_);
+        set_kernel_args(count_materials_, wf::set_stage_args(count_materials_, shared), key_counts_);
         set_kernel_args(scan_materials_, 0, key_counts_);
-        set_kernel_args(scatter_materials_, pool_.set_stage_args(scatter_materials_, params_), scene_.triangles,
-                        key_counts_, sorted_);
+        set_kernel_args(scatter_materials_, wf::set_stage_args(scatter_materials_, shared), key_counts_, sorted_);
     }
-    set_kernel_args(shared_then(STAGE_ACCUMULATE), own, film_.sum, film_.compensation, film_.sum_squares,
-                    film_.squares_compensation, film_.samples);
 }
 
 void WavefrontScheduler::render_to(uint32_t spp) {

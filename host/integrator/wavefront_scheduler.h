@@ -16,7 +16,7 @@
 //   fullest — Cycles X's way: read the queue counters after every launch and
 //             launch the stage whose queue is longest.
 // --sort-materials adds a counting sort of the extension queue by material
-// between intersect and shade (kernels/stages/sort_by_material.cl).
+// between intersect and shade (kernels/stages/sort_by_material.h).
 #pragma once
 
 #include <array>
@@ -42,7 +42,6 @@ private:
     void extend(uint32_t items);
 
     static constexpr int kStageKernels = STAGE_ACCUMULATE + 1;
-    static constexpr size_t kSortKeys = 256; // WF_SORT_KEYS
     std::array<cl::Kernel, kStageKernels> kernels_; // one per wavefront stage, by name
     // --sort-materials only: its kernels, the key counts and the sorted queue.
     cl::Kernel count_materials_, scan_materials_, scatter_materials_;

@@ -36,7 +36,7 @@ struct RenderSummary {
     RenderStats stats;
     std::string output;
     int interrupted_by = 0; // the signal that stopped the render early, or 0
-    std::string pool_note;  // why the pool is smaller than the default, when it is
+    std::string pool_note;  // why the pool is not what was asked for (or the default), when it is not
 };
 
 void print_report(std::ostream& out, const RenderSummary& s);

@@ -52,7 +52,9 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
                    const RenderSettings& requested)
     : device_(device) {
     RenderSettings settings = requested;
-    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, nullptr);
+    // The one place the pool size is chosen: the request or the default,
+    // capped at the pixels, and by default at what the device holds (below).
+    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, &summary_.pool_note);
 
     const auto start = std::chrono::steady_clock::now();
     const Bvh bvh = build_bvh(scene.positions);
@@ -98,7 +100,7 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     summary_.materials = scene.materials.size();
     summary_.emissive_triangles = data.emissive_triangles;
     summary_.punctual_lights = data.punctual.size();
-    summary_.environment = data.environment != nullptr;
+    summary_.environment = scene.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
     summary_.queue_push = settings.queue_push;

@@ -11,7 +11,6 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "device/device_buffer.h"
 #include "base/errors.h"
 
 namespace wf {
@@ -137,14 +136,6 @@ void light_unlit_scene(Scene& scene) {
     }
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     scene.warnings.push_back("the scene has no light; lit by a uniform white environment of radiance 1");
-}
-
-DeviceEnvironment upload_environment(const cl::Context& context, const EnvironmentMap& map) {
-    DeviceEnvironment d;
-    d.header = map.header;
-    d.texels = upload_read_only(context, map.texels, d.bytes);
-    d.distribution = upload_read_only(context, map.distribution, d.bytes);
-    return d;
 }
 
 } // namespace wf

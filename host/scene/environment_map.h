@@ -1,7 +1,8 @@
 // environment_map.h — an environment light as the device reads it
 // (Environment in include/wavefront/scene_types.h, sampled and looked up by
 // kernels/lights/environment.h): loaded from an equirectangular .exr or .hdr,
-// or a constant radiance; and its upload.
+// or a constant radiance. The device scene (host/device/device_scene.h)
+// uploads its header, texels and distribution.
 //
 // Texels: NaN or infinite values reject the file (InputError); negative ones
 // (ringing from lossy EXR compression) are clamped to 0 with one warning. A
@@ -13,9 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <CL/opencl.hpp>
-
-#include "film/film.h"
+#include "image/image.h"
 #include "scene/scene.h"
 #include "wavefront/scene_types.h"
 
@@ -46,13 +45,5 @@ EnvironmentMap constant_environment(float radiance = 1.0f);
 // environment) gets the uniform white environment of radiance 1 and a
 // warning saying so, so that every asset renders something sensible.
 void light_unlit_scene(Scene& scene);
-
-struct DeviceEnvironment {
-    Environment header{};            // pass by value as a kernel argument
-    cl::Buffer texels, distribution; // read-only float buffers
-    size_t bytes = 0;
-};
-
-DeviceEnvironment upload_environment(const cl::Context& context, const EnvironmentMap& map);
 
 } // namespace wf

@@ -74,6 +74,10 @@ typedef struct RenderParams {
 #define WF_PATH_LENGTH_BUCKETS 16
 #define WF_COUNTER_COUNT (WF_COUNTER_PATH_LENGTHS + WF_PATH_LENGTH_BUCKETS)
 
+/* --sort-materials: the keys of the counting sort of the extension queue by
+ * material (kernels/stages/sort_by_material.h); materials beyond share keys. */
+#define WF_SORT_KEYS 256
+
 /* In shadow_radiance.w: the path has a new ray to follow once its shadow ray is traced. */
 #define WF_SHADOW_THEN_CONTINUE 0x80000000u
 

@@ -7,15 +7,16 @@
 #define WF_BOUNCE_LAYERS_H
 
 #include "wavefront/path_state.h"
+#include "film.h"
 #include "common/film_add.h"
 #include "common/finite.h"
 
 /* Adds radiance that arrived after `bounces` reflections, when the render keeps layers. */
-inline void add_to_bounce_layer(const RenderParams* params, __global float4* layers,
-                                __global float4* layer_compensation, uint pixel, uint bounces, float3 radiance) {
+inline void add_to_bounce_layer(const RenderParams* params, const FilmBuffers* film, uint pixel, uint bounces,
+                                float3 radiance) {
     if (params->bounce_layers == 0u || !is_finite3(radiance)) return;
     const uint layer = min(bounces, params->bounce_layers - 1u);
-    film_add(layers, layer_compensation, layer * params->pixel_count + pixel, (float4)(radiance, 0.0f));
+    film_add(film->layers, film->layer_compensation, layer * params->pixel_count + pixel, (float4)(radiance, 0.0f));
 }
 
 #endif

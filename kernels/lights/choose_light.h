@@ -6,6 +6,7 @@
 
 #include "wavefront/path_state.h"
 #include "compiled_features.h"
+#include "scene.h"
 #include "lights/light_sample.h"
 #include "lights/emissive_triangles.h"
 #include "lights/environment.h"
@@ -17,20 +18,16 @@ inline uint choose_light(__global const LightEntry* lights, uint count, float u_
 }
 
 /* u.x and u.w choose the light; u.y and u.z place the sample on it. */
-inline LightSample sample_light(const RenderParams* params, __global const LightEntry* lights,
-                                __global const Triangle* triangles, __global const Material* materials,
-                                __global const PunctualLight* punctual, __global const float* environment_texels,
-                                __global const float* environment_distribution, const SceneTextures* textures,
-                                float3 receiver, float4 u) {
-    const LightEntry entry = lights[choose_light(lights, params->light_count, u.x, u.w)];
+inline LightSample sample_light(const RenderParams* params, const Scene* scene, float3 receiver, float4 u) {
+    const LightEntry entry = scene->lights[choose_light(scene->lights, params->light_count, u.x, u.w)];
 #if WF_HAS_EMISSIVE_TRIANGLES
     if (entry.kind == WF_LIGHT_TRIANGLE)
-        return sample_emissive_triangle(entry, triangles, materials, textures, receiver, u.yz);
+        return sample_emissive_triangle(entry, scene, receiver, u.yz);
 #endif
     LightSample s = no_light_sample();
 #if WF_HAS_PUNCTUAL_LIGHTS
     if (entry.kind == WF_LIGHT_PUNCTUAL) {
-        const PunctualLight light = punctual[entry.index];
+        const PunctualLight light = scene->punctual[entry.index];
         const PunctualSample p = punctual_sample(light, receiver);
         s.wi = p.direction;
         s.radiance = p.Li;
@@ -44,7 +41,7 @@ inline LightSample sample_light(const RenderParams* params, __global const Light
 #if WF_HAS_ENVIRONMENT
     if (entry.kind == WF_LIGHT_ENVIRONMENT) {
         const EnvironmentSample e =
-            environment_sample(params->environment, environment_texels, environment_distribution, u.yz);
+            environment_sample(params->environment, scene->environment_texels, scene->environment_distribution, u.yz);
         s.wi = e.direction;
         s.radiance = e.radiance;
         s.pdf = entry.pmf * e.pdf;

@@ -11,6 +11,7 @@
 #include "geometry/ray_offset.h"
 #include "lights/light_sample.h"
 #include "materials/alpha_mask.h"
+#include "materials/surface_material.h"
 
 /* Solid-angle density of reaching a light point at distance² dist2 whose
  * surface makes cosine cos_light with the ray; 0 where it would overflow. */
@@ -20,12 +21,10 @@ inline float light_pdf_solid_angle(float pmf, float area, float dist2, float cos
 }
 
 /* A point on the triangle of `entry`, as seen from `receiver`. */
-inline LightSample sample_emissive_triangle(LightEntry entry, __global const Triangle* triangles,
-                                            __global const Material* materials, const SceneTextures* textures,
-                                            float3 receiver, float2 u) {
+inline LightSample sample_emissive_triangle(LightEntry entry, const Scene* scene, float3 receiver, float2 u) {
     LightSample s = no_light_sample();
     s.segment_end = WF_SEGMENT_TO_SURFACE;
-    const __global Triangle* t = &triangles[entry.index];
+    const __global Triangle* t = &scene->triangles[entry.index];
     const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
     const float2 b = sample_triangle_uniform(u);
     s.point = interpolate_triangle(v0, v1, v2, b.x, b.y);
@@ -38,7 +37,7 @@ inline LightSample sample_emissive_triangle(LightEntry entry, __global const Tri
     s.wi = -to_receiver / distance;
     const float3 front = cross_edges / (2.0f * area);
     const float cos_front = dot(front, to_receiver) / distance;
-    const __global Material* m = &materials[t->material];
+    const __global Material* m = &scene->materials[t->material];
     const bool emits_toward = cos_front > 0.0f || (m->flags & WF_MATERIAL_DOUBLE_SIDED);
     s.normal = cos_front >= 0.0f ? front : -front;
     SurfacePoint point;
@@ -47,8 +46,8 @@ inline LightSample sample_emissive_triangle(LightEntry entry, __global const Tri
     point.b1 = b.x;
     point.b2 = b.y;
     /* A point in an alpha-masked hole is not there: BSDF rays pass through it. */
-    const bool present = hit_passes_filter(textures, triangles, (int)entry.index, b.x, b.y);
-    s.radiance = emits_toward && present ? surface_emission(m, textures, &point) : (float3)(0.0f);
+    const bool present = hit_passes_filter(scene, scene->triangles, (int)entry.index, b.x, b.y);
+    s.radiance = emits_toward && present ? surface_emission(m, scene, &point) : (float3)(0.0f);
     s.pdf = emits_toward && present ? light_pdf_solid_angle(entry.pmf, area, dist2, fabs(cos_front)) : 0.0f;
     return s;
 }

@@ -7,22 +7,23 @@
 #ifndef WF_ALPHA_MASK_H
 #define WF_ALPHA_MASK_H
 
-#include "materials/surface_material.h"
+#include "materials/surface_texture.h"
 
-typedef SceneTextures HitFilter;
+/* The scene, whose textures say where a masked material is opaque. */
+typedef Scene HitFilter;
 
-inline int hit_passes_filter(const HitFilter* textures, __global const Triangle* triangles, int triangle, float b1,
+inline int hit_passes_filter(const HitFilter* scene, __global const Triangle* triangles, int triangle, float b1,
                              float b2) {
 #if WF_HAS_ALPHA_MASK
     const uint material = triangles[triangle].material;
-    const MaterialTextureParams p = textures->params[material];
+    const MaterialTextureParams p = scene->material_textures[material];
     if (p.alpha_mode != WF_ALPHA_MASK) return 1;
     SurfacePoint point;
     point.triangle = (uint)triangle;
     point.material = material;
     point.b1 = b1;
     point.b2 = b2;
-    return p.base_alpha * surface_texture(textures, &point, WF_TEXTURE_BASE_COLOR).w >= p.alpha_cutoff;
+    return p.base_alpha * surface_texture(scene, &point, WF_TEXTURE_BASE_COLOR).w >= p.alpha_cutoff;
 #else
     return 1;
 #endif

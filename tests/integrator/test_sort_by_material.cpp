@@ -11,7 +11,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "device/kernel_program.h"
-#include "integrator/path_pool.h"
+#include "integrator/stage_args.h"
 #include "cli/render_command.h"
 #include "support/test_support.h"
 
@@ -36,10 +36,13 @@ TEST(SortByMaterial, GroupsTheExtensionQueueByMaterial) {
     std::shuffle(queue.begin(), queue.end(), rng);
 
     PathPool pool(device.context, kPaths);
-    cl::Buffer triangle_buffer(device.context, CL_MEM_READ_ONLY, sizeof(Triangle) * kTriangles);
+    DeviceSceneData data;
+    data.triangles = triangles;
+    const DeviceScene scene = upload_scene(device.context, data);
+    const Film film(device.context, q, 1, 1, 0);
+    const Camera camera{};
     cl::Buffer key_counts(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * kKeys);
     cl::Buffer sorted(device.context, CL_MEM_READ_WRITE, sizeof(cl_uint) * kPaths);
-    q.enqueueWriteBuffer(triangle_buffer, CL_TRUE, 0, sizeof(Triangle) * kTriangles, triangles.data());
     q.enqueueWriteBuffer(pool.field(PathField::hit), CL_TRUE, 0, sizeof(cl_float4) * kPaths, hits.data());
     q.enqueueWriteBuffer(pool.queues, CL_TRUE, 0, sizeof(cl_uint) * kPaths, queue.data());
     std::vector<cl_uint> counters(WF_COUNTER_COUNT, 0u);
@@ -52,14 +55,10 @@ TEST(SortByMaterial, GroupsTheExtensionQueueByMaterial) {
     params.pool_size = kPaths;
     cl::Kernel count(program.program, "count_materials"), scan(program.program, "scan_materials"),
         scatter(program.program, "scatter_materials");
-    cl_uint next = pool.set_stage_args(count, params);
-    count.setArg(next, triangle_buffer);
-    count.setArg(next + 1, key_counts);
+    const StageArgs shared{pool, params, camera, scene, film};
+    set_kernel_args(count, set_stage_args(count, shared), key_counts);
     scan.setArg(0, key_counts);
-    next = pool.set_stage_args(scatter, params);
-    scatter.setArg(next, triangle_buffer);
-    scatter.setArg(next + 1, key_counts);
-    scatter.setArg(next + 2, sorted);
+    set_kernel_args(scatter, set_stage_args(scatter, shared), key_counts, sorted);
     const cl::NDRange global((kPaths + 63) / 64 * 64), local(64);
     q.enqueueNDRangeKernel(count, cl::NullRange, global, local);
     q.enqueueNDRangeKernel(scan, cl::NullRange, local, local);

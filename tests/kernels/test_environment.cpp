@@ -18,6 +18,7 @@
 
 #include "scene/environment_map.h"
 #include "base/errors.h"
+#include "device/device_buffer.h"
 #include "device/kernel_sources.h"
 #include "device/layout_check.h"
 #include "lights/environment.h"
@@ -287,13 +288,15 @@ TEST(EnvironmentDevice, AgreesWithHost) {
     for (float& v : u) v = uniform(rng);
     u[0] = 0.0f, u[1] = 0.0f, u[2] = 0.99999994f, u[3] = 0.99999994f; // the ends of [0, 1)
     for (const Case& c : cases()) {
-        const DeviceEnvironment d = upload_environment(device.context, c.map);
+        size_t bytes = 0;
+        const cl::Buffer texels = upload_read_only(device.context, c.map.texels, bytes);
+        const cl::Buffer distribution = upload_read_only(device.context, c.map.distribution, bytes);
         cl::Buffer ub(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, u.size() * sizeof(float), u.data());
         cl::Buffer out(device.context, CL_MEM_WRITE_ONLY, 9 * n * sizeof(float));
         cl::Kernel kernel(program, "environment_test");
-        kernel.setArg(0, sizeof(Environment), &d.header);
-        kernel.setArg(1, d.texels);
-        kernel.setArg(2, d.distribution);
+        kernel.setArg(0, sizeof(Environment), &c.map.header);
+        kernel.setArg(1, texels);
+        kernel.setArg(2, distribution);
         kernel.setArg(3, ub);
         kernel.setArg(4, out);
         device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(n));

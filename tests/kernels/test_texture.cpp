@@ -18,7 +18,7 @@
 #include <limits>
 #include <random>
 
-#include "device/device_textures.h"
+#include "device/device_scene.h"
 #include "base/errors.h"
 #include "gltf/gltf_loader.h"
 #include "materials/texture.h"
@@ -389,9 +389,10 @@ TEST(TextureGltf, DamagedHelmetLoadsFiveEmbeddedJpegs) {
     EXPECT_NEAR(normal, 0.5, 0.1); // tangent-space x centred on 0
     std::vector<uint32_t> order(scene.triangle_count());
     std::iota(order.begin(), order.end(), 0u);
-    const DeviceTextureData data = make_device_texture_data(scene, order);
+    DeviceSceneData data;
+    add_texture_data(scene, order, data);
     EXPECT_EQ(data.texcoords.size(), scene.triangle_count());
-    EXPECT_EQ(data.refs.size(), scene.materials.size() * WF_TEXTURE_SLOTS);
+    EXPECT_EQ(data.texture_refs.size(), scene.materials.size() * WF_TEXTURE_SLOTS);
     test::report_measured("DamagedHelmet: 4 textures of 2048x2048 in " + std::to_string(data.bytes()) +
                           " bytes (RGBA8), base colour mean red " + std::to_string(base));
 }

@@ -11,10 +11,14 @@
  * Delta lights are found by NEE alone, whatever the technique; a Dirac lobe
  * (mirror, smooth glass) takes no light sample and passes pdf 0 on, so the
  * emission its ray finds is counted whole. */
+#ifndef WF_STAGE_SHADE_H
+#define WF_STAGE_SHADE_H
+
 #include "path_state.h"
+#include "scene.h"
+#include "film.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
-#include "common/queue_push.h"
 #include "common/sample_values.h"
 #include "materials/surface_material.h"
 #include "lights/choose_light.h"
@@ -33,8 +37,8 @@ typedef struct SurfaceHit {
     float area;
 } SurfaceHit;
 
-inline SurfaceHit surface_at(__global const Triangle* t, __global const TriangleNormals* n,
-                             const SceneTextures* textures, const SurfacePoint* point, float4 hit, float3 direction) {
+inline SurfaceHit surface_at(__global const Triangle* t, __global const TriangleNormals* n, const Scene* scene,
+                             const SurfacePoint* point, float4 hit, float3 direction) {
     SurfaceHit s;
     const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
     /* From the corners, not origin + t·direction: off the triangle by its own
@@ -48,7 +52,7 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
     s.geometric_normal = s.front_face ? ng : -ng;
     const float b0 = 1.0f - hit.y - hit.z;
     const float3 ns = surface_normal(
-        textures, point, normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2)));
+        scene, point, normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2)));
     s.shading_normal = dot(ns, s.geometric_normal) < 0.0f ? -ns : ns;
     return s;
 }
@@ -63,10 +67,10 @@ inline float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_ligh
 }
 
 /* Radiance the path gathers, into its sum and its bounce layer. */
-inline void add_radiance(PathState* path, const RenderParams* params, __global float4* layers,
-                         __global float4* layer_compensation, uint slot, uint pixel, uint depth, float3 radiance) {
+inline void add_radiance(PathState* path, const RenderParams* params, const FilmBuffers* film, uint slot, uint pixel,
+                         uint depth, float3 radiance) {
     path->radiance[slot].xyz += radiance;
-    add_to_bounce_layer(params, layers, layer_compensation, pixel, depth, radiance);
+    add_to_bounce_layer(params, film, pixel, depth, radiance);
 }
 
 /* The local shading frame: z is the shading normal. */
@@ -85,14 +89,10 @@ inline bool same_side(float3 geometric_normal, float3 w, float local_z) {
     return (g > 0.0f && local_z > 0.0f) || (g < 0.0f && local_z < 0.0f);
 }
 
-inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
-                       __global const Triangle* triangles, __global const TriangleNormals* normals,
-                       __global const Material* materials, __global const LightEntry* lights,
-                       __global const PunctualLight* punctual, __global const float* environment_texels,
-                       __global const float* environment_distribution, const SceneTextures* textures,
-                       __global float4* layers, __global float4* layer_compensation) {
+inline uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                       const FilmBuffers* film) {
     const float4 hit = path->hit[slot];
-    const int triangle = as_int(hit.w);
+    const int triangle = path_hit_triangle(path, slot);
     const float4 ray = path->ray_direction[slot];
     const float3 direction = ray.xyz;
     const float pdf_previous = ray.w; /* 0 for camera rays and delta bounces: nothing to weigh against */
@@ -104,37 +104,37 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
 #if WF_HAS_ENVIRONMENT
         if (params->environment_light != WF_NO_LIGHT) {
-            const float pdf_light = lights[params->environment_light].pmf *
-                                    environment_pdf(params->environment, environment_texels, direction);
+            const float pdf_light = scene->lights[params->environment_light].pmf *
+                                    environment_pdf(params->environment, scene->environment_texels, direction);
             const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-            add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
-                         weight * throughput * environment_radiance(params->environment, environment_texels, direction));
+            add_radiance(path, params, film, slot, pixel, depth,
+                         weight * throughput *
+                             environment_radiance(params->environment, scene->environment_texels, direction));
         }
 #endif
         return WF_SHADE_FINISHED;
     }
 
     const uint sample = current.sample;
-    const __global Triangle* t = &triangles[triangle];
-    const __global Material* m = &materials[t->material];
+    const __global Triangle* t = &scene->triangles[triangle];
+    const __global Material* m = &scene->materials[t->material];
     SurfacePoint point;
     point.triangle = (uint)triangle;
     point.material = t->material;
     point.b1 = hit.y;
     point.b2 = hit.z;
-    const SurfaceHit s = surface_at(t, &normals[triangle], textures, &point, hit, direction);
+    const SurfaceHit s = surface_at(t, &scene->normals[triangle], scene, &point, hit, direction);
 
     /* Emission seen along the ray. */
     if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
         const float cos_light = -dot(s.geometric_normal, direction);
-        const float pdf_light = light_pdf_solid_angle(lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
+        const float pdf_light = light_pdf_solid_angle(scene->lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-        add_radiance(path, params, layers, layer_compensation, slot, pixel, depth,
-                     weight * throughput * surface_emission(m, textures, &point));
+        add_radiance(path, params, film, slot, pixel, depth, weight * throughput * surface_emission(m, scene, &point));
     }
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
-    const BsdfParams bsdf = surface_bsdf(m, textures, &point, params->hemisphere);
+    const BsdfParams bsdf = surface_bsdf(m, scene, &point, params->hemisphere);
     /* An opaque surface is shaded on the side the ray arrived from; a
      * transmissive one keeps its front (counter-clockwise) side as +z, so
      * that wo.z < 0 says the ray arrived from inside. */
@@ -145,13 +145,13 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     orthonormal_basis(frame.z, &frame.x, &frame.y);
     const float3 wo = to_local(&frame, -direction);
     uint outcome = WF_SHADE_FINISHED;
+    float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
 
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */
     if (params->light_count > 0u && !bsdf_is_delta(&bsdf)) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-        const LightSample ls = sample_light(params, lights, triangles, materials, punctual, environment_texels,
-                                            environment_distribution, textures, s.position, u);
+        const LightSample ls = sample_light(params, scene, s.position, u);
         const float3 wi = to_local(&frame, ls.wi);
         const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
         float pdf_bsdf;
@@ -165,8 +165,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] =
                     (float4)(light_shadow_segment(&ls, origin, 2.0f * params->scene_diameter), 0.0f);
-                /* w is set below, once the continuation is known. */
-                path->shadow_radiance[slot] = (float4)(contribution, 0.0f);
+                shadow_light = contribution;
                 outcome |= WF_SHADE_SHADOW_RAY;
             }
         }
@@ -179,7 +178,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
         const float3 weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
         if (any(weight > 0.0f) && is_finite3(weight)) {
-            path->throughput[slot] = (float4)(throughput * weight, as_float(depth + 1u));
+            set_path_throughput(path, slot, throughput * weight, depth + 1u);
             path->ray_origin[slot] = (float4)(offset_ray_origin(s.position, s.position_error, geometric_normal, wi), 0.0f);
             path->ray_direction[slot] = (float4)(wi, bs.delta ? 0.0f : bs.pdf);
             outcome |= WF_SHADE_CONTINUES;
@@ -188,33 +187,8 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot,
     /* What intersect_shadow needs to send the path on: the bounce layer the
      * light joins if it arrives, and whether the path goes on after it. */
     if (outcome & WF_SHADE_SHADOW_RAY)
-        path->shadow_radiance[slot].w =
-            as_float((depth + 1u) | ((outcome & WF_SHADE_CONTINUES) ? WF_SHADOW_THEN_CONTINUE : 0u));
+        set_shadow_light(path, slot, shadow_light, depth + 1u, (outcome & WF_SHADE_CONTINUES) != 0u);
     return outcome;
 }
 
-__kernel void shade(WF_STAGE_PARAMS, __global const Triangle* triangles,
-                    __global const TriangleNormals* normals, __global const Material* materials,
-                    __global const LightEntry* lights, __global const PunctualLight* punctual,
-                    __global const float* environment_texels, __global const float* environment_distribution,
-                    WF_SCENE_TEXTURE_PARAMS, __global float4* layers, __global float4* layer_compensation) {
-    WF_BIND_PATH_STATE(path);
-    WF_BIND_SCENE_TEXTURES(textures);
-    __local uint scratch[WF_QUEUE_SCRATCH];
-    uint slot;
-    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint outcome = active ? shade_path(&path, &params, slot, triangles, normals, materials, lights, punctual,
-                                             environment_texels, environment_distribution, &textures, layers,
-                                             layer_compensation)
-                                : WF_SHADE_FINISHED;
-    /* Each path goes to exactly one queue: one with a shadow ray waits for it
-     * (intersect_shadow sends it on), so no stage can overwrite the pending
-     * ray whatever order the scheduler launches them in. */
-    const bool shadow_ray = (outcome & WF_SHADE_SHADOW_RAY) != 0u;
-    const bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
-    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot, shadow_ray, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, !shadow_ray && continues, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !shadow_ray && !continues,
-               scratch);
-}
+#endif

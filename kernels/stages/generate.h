@@ -1,14 +1,16 @@
 /* generate — gives each free path slot the camera ray of its next sample.
  *
  * Slot i owns pixels i, i + pool, i + 2·pool, ... and runs through them sample
- * by sample (nth_sample, path_state.h): every sample of a pixel is traced by the same slot, one after the
+ * by sample (nth_sample, kernels/path_state.h): every sample of a pixel is traced by the same slot, one after the
  * other. Accumulation therefore needs no atomics and adds each pixel's samples
  * in sample order, so the image is independent of the pool size. A slot whose
  * samples are all started stays out of the queues. */
+#ifndef WF_STAGE_GENERATE_H
+#define WF_STAGE_GENERATE_H
+
 #include "path_state.h"
 #include "wavefront/scene_types.h"
 #include "common/sample_values.h"
-#include "common/queue_push.h"
 
 inline bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
                                 uint slot) {
@@ -27,16 +29,9 @@ inline bool start_camera_sample(PathState* path, const RenderParams* params, con
 
     path->ray_origin[slot] = (float4)(vload3(0, camera->origin), 0.0f);
     path->ray_direction[slot] = (float4)(direction, 0.0f);
-    path->throughput[slot] = (float4)(1.0f, 1.0f, 1.0f, as_float(0u)); /* no bounce yet */
-    path->radiance[slot] = (float4)(0.0f, 0.0f, 0.0f, as_float(work + 1u));
+    set_path_throughput(path, slot, (float3)(1.0f), 0u); /* no bounce yet */
+    start_path_radiance(path, slot, work + 1u);
     return true;
 }
 
-__kernel void generate(WF_STAGE_PARAMS, const Camera camera) {
-    WF_BIND_PATH_STATE(path);
-    __local uint scratch[WF_QUEUE_SCRATCH];
-    uint slot;
-    const bool started = queue_slot(params.pool_size, queues, counters, WF_QUEUE_REGENERATE, &slot) &&
-                         start_camera_sample(&path, &params, &camera, slot);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, started, scratch);
-}
+#endif

@@ -3,9 +3,11 @@
  * From params.roulette_depth bounces on, a path survives with probability
  * q = min(1, max component of its throughput) and its throughput is divided by
  * q; survivors return to the extension queue, the rest are finished. */
+#ifndef WF_STAGE_ROULETTE_H
+#define WF_STAGE_ROULETTE_H
+
 #include "path_state.h"
 #include "common/sample_values.h"
-#include "common/queue_push.h"
 
 inline bool survives_roulette(PathState* path, const RenderParams* params, uint slot) {
     const uint depth = path_depth(path, slot);
@@ -18,16 +20,8 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
     const PathSample current = current_sample(path, params, slot);
     const float u = sample_values(params, current.pixel, current.sample, depth - 1u, WF_RNG_BSDF).w;
     if (!(u < q)) return false;
-    path->throughput[slot].xyz = throughput / q;
+    set_path_throughput(path, slot, throughput / q, depth);
     return true;
 }
 
-__kernel void roulette(WF_STAGE_PARAMS) {
-    WF_BIND_PATH_STATE(path);
-    __local uint scratch[WF_QUEUE_SCRATCH];
-    uint slot;
-    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_CONTINUE, &slot);
-    const bool survives = active && survives_roulette(&path, &params, slot);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, survives, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !survives, scratch);
-}
+#endif

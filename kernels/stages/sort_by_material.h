@@ -8,16 +8,19 @@
  *   scatter_materials each path to its key's range, one global atomic per
  *                     work-group and key, into `sorted`, which the host
  *                     copies back over the extension queue.
- * The key is the material index + 1 (0 for a miss), modulo WF_SORT_KEYS:
+ * The key is the material index + 1 (0 for a miss), modulo WF_SORT_KEYS
+ * (include/wavefront/path_state.h):
  * materials beyond it share keys, which still groups them. The image cannot
  * change: shade's work per path does not depend on its place in the queue. */
+#ifndef WF_STAGE_SORT_BY_MATERIAL_H
+#define WF_STAGE_SORT_BY_MATERIAL_H
+
 #include "path_state.h"
+#include "scene.h"
 
-#define WF_SORT_KEYS 256
-
-inline uint material_key(const PathState* path, uint slot, __global const Triangle* triangles) {
-    const int triangle = as_int(path->hit[slot].w);
-    return triangle < 0 ? 0u : (triangles[triangle].material + 1u) % WF_SORT_KEYS;
+inline uint material_key(const PathState* path, uint slot, const Scene* scene) {
+    const int triangle = path_hit_triangle(path, slot);
+    return triangle < 0 ? 0u : (scene->triangles[triangle].material + 1u) % WF_SORT_KEYS;
 }
 
 /* Zeroes the group's local key counts (every work-item calls it). */
@@ -26,20 +29,17 @@ inline void clear_keys(__local uint* keys) {
     barrier(CLK_LOCAL_MEM_FENCE);
 }
 
-__kernel void count_materials(WF_STAGE_PARAMS, __global const Triangle* triangles, __global uint* key_counts) {
-    WF_BIND_PATH_STATE(path);
-    __local uint keys[WF_SORT_KEYS];
-    uint slot;
-    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
+/* Adds the group's keys to the global histogram (every work-item calls it). */
+inline void count_keys(__local uint* keys, bool active, uint key, __global uint* key_counts) {
     clear_keys(keys);
-    if (active) atomic_inc(&keys[material_key(&path, slot, triangles)]);
+    if (active) atomic_inc(&keys[key]);
     barrier(CLK_LOCAL_MEM_FENCE);
     for (uint k = get_local_id(0); k < WF_SORT_KEYS; k += get_local_size(0))
         if (keys[k]) atomic_add(&key_counts[k], keys[k]);
 }
 
-__kernel void scan_materials(__global uint* key_counts) {
-    if (get_global_id(0) != 0) return; /* launched as one work-group; one work-item scans */
+/* Key counts to start offsets, in place; one work-item. */
+inline void scan_keys(__global uint* key_counts) {
     uint start = 0u;
     for (uint k = 0; k < WF_SORT_KEYS; ++k) {
         const uint count = key_counts[k];
@@ -48,14 +48,9 @@ __kernel void scan_materials(__global uint* key_counts) {
     }
 }
 
-__kernel void scatter_materials(WF_STAGE_PARAMS, __global const Triangle* triangles, __global uint* key_starts,
-                                __global uint* sorted) {
-    WF_BIND_PATH_STATE(path);
-    __local uint keys[WF_SORT_KEYS];
-    __local uint group_start[WF_SORT_KEYS];
-    uint slot;
-    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint key = active ? material_key(&path, slot, triangles) : 0u;
+/* Writes the slot into its key's range of `sorted` (every work-item calls it). */
+inline void scatter_by_key(__local uint* keys, __local uint* group_start, bool active, uint key, uint slot,
+                           __global uint* key_starts, __global uint* sorted) {
     clear_keys(keys);
     const uint at = active ? atomic_inc(&keys[key]) : 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -64,3 +59,5 @@ __kernel void scatter_materials(WF_STAGE_PARAMS, __global const Triangle* triang
     barrier(CLK_LOCAL_MEM_FENCE);
     if (active) sorted[group_start[key] + at] = slot;
 }
+
+#endif

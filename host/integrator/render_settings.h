@@ -1,0 +1,69 @@
+// render_settings.h — what a render is asked to do: samples, depth, seed,
+// pool and work-group sizes, the sampling techniques, the integrator and its
+// schedule; and the one table of names of each choice, which the command
+// line parses, the report prints and the image metadata records. No OpenCL
+// here: the command line fills these in without knowing a device.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+#include "wavefront/path_state.h"
+
+namespace wf {
+
+enum class Integrator { Wavefront, Megakernel };
+
+// In which order the wavefront launches its stages (wavefront_scheduler.cpp).
+enum class Schedule {
+    Refill,  // every stage once per iteration, freed slots refilled at once
+    Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts
+    Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
+};
+
+// How the kernels append to queues and counters (kernels/common/queue_push.h),
+// in the order of its WF_PUSH_* values.
+enum class QueuePush { Group, Atomic, Scan };
+
+// Each choice's names, indexed by its enum or WF_* value.
+using ChoiceNames = std::array<const char*, 3>; // unused entries are null
+constexpr ChoiceNames kIntegratorNames = {"wavefront", "megakernel", nullptr};
+constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest"};
+constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
+constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
+constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
+constexpr ChoiceNames kSamplerNames = {"independent", "sobol", nullptr};
+static_assert(WF_LIGHT_SAMPLING_BSDF == 0 && WF_LIGHT_SAMPLING_NEE == 1 && WF_LIGHT_SAMPLING_MIS == 2);
+static_assert(WF_HEMISPHERE_UNIFORM == 0 && WF_HEMISPHERE_COSINE == 1);
+static_assert(WF_SAMPLER_INDEPENDENT == 0 && WF_SAMPLER_SOBOL == 1);
+
+inline const char* choice_name(const ChoiceNames& names, uint32_t value) { return names.at(value); }
+inline const char* integrator_name(Integrator i) { return choice_name(kIntegratorNames, static_cast<uint32_t>(i)); }
+inline const char* schedule_name(Schedule s) { return choice_name(kScheduleNames, static_cast<uint32_t>(s)); }
+inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushNames, static_cast<uint32_t>(p)); }
+
+struct RenderSettings {
+    uint32_t spp = 16;
+    uint32_t max_depth = WF_UNLIMITED_DEPTH;
+    uint32_t seed = 0;
+    uint32_t pool_size = 0; // 0: chosen from the image and the device (render/renderer.h)
+    uint32_t roulette_depth = 3;
+    uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
+    uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
+    uint32_t hemisphere = WF_HEMISPHERE_COSINE;
+    uint32_t sampler = WF_SAMPLER_INDEPENDENT;
+    uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
+    bool specialize = true;     // compile the kernels for the scene's features (host/device/scene_features.h)
+    std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
+    Integrator integrator = Integrator::Wavefront;
+    Schedule schedule = Schedule::Refill; // for the wavefront integrator
+    QueuePush queue_push = QueuePush::Group;
+    bool sort_materials = false; // reorder the extension queue by material before shade
+    // While it holds non-zero, no sample starts: the paths in flight end and
+    // the round returns early, each slot's pixels then one sample apart at most.
+    const std::atomic<int>* stop = nullptr;
+};
+
+} // namespace wf

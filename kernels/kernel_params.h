@@ -1,0 +1,36 @@
+/* kernel_params.h — the one parameter list every kernel of the render starts
+ * with, and its binding into the structs stage functions take.
+ *
+ * WF_STAGE_PARAMS is, in order: one __global pointer per path-state field
+ * (include/wavefront/path_state.h), per scene buffer (scene_buffers.h) and per
+ * film buffer (film_buffers.h), then the render constants, the camera, the
+ * queues and the counters. Every stage kernel and the megakernel take the
+ * same list, so the host binds them all with one loop over the same lists
+ * (host/integrator/stage_args.cpp); a kernel's own arguments follow it.
+ * WF_BIND_STAGE_ARGS gathers the pointers into `path`, `scene` and `film`. */
+#ifndef WF_KERNEL_PARAMS_H
+#define WF_KERNEL_PARAMS_H
+
+#include "path_state.h"
+#include "scene.h"
+#include "film.h"
+
+/* Parameters are prefixed so that a stage's locals (hit, pixel, ...) never
+ * shadow them. */
+#define WF_PATH_PARAM(type, name, what) __global type* path_##name,
+#define WF_SCENE_PARAM(type, name, what) __global const type* scene_##name,
+#define WF_FILM_PARAM(type, name, what) __global type* film_##name,
+#define WF_PATH_ARG(type, name, what) path_##name,
+#define WF_SCENE_ARG(type, name, what) scene_##name,
+#define WF_FILM_ARG(type, name, what) film_##name,
+
+#define WF_STAGE_PARAMS                                                                            \
+    WF_PATH_STATE(WF_PATH_PARAM) WF_SCENE_BUFFERS(WF_SCENE_PARAM) WF_FILM_BUFFERS(WF_FILM_PARAM)   \
+    const RenderParams params, const Camera camera, __global uint *queues, volatile __global uint *counters
+
+#define WF_BIND_STAGE_ARGS                                                                         \
+    PathState path = {WF_PATH_STATE(WF_PATH_ARG)};                                                 \
+    const Scene scene = {WF_SCENE_BUFFERS(WF_SCENE_ARG)};                                          \
+    const FilmBuffers film = {WF_FILM_BUFFERS(WF_FILM_ARG)}
+
+#endif

@@ -1,0 +1,15 @@
+/* intersect — the closest hit of the slot's ray, stored in its path state. */
+#ifndef WF_STAGE_INTERSECT_H
+#define WF_STAGE_INTERSECT_H
+
+#include "path_state.h"
+#include "scene.h"
+#include "geometry/bvh_traverse.h"
+
+inline void intersect_path(PathState* path, uint slot, const Scene* scene) {
+    const RayHit hit = bvh_closest_hit(scene->nodes, scene->triangles, path->ray_origin[slot].xyz,
+                                       path->ray_direction[slot].xyz, INFINITY, scene);
+    set_path_hit(path, slot, hit.t, hit.u, hit.v, hit.triangle);
+}
+
+#endif
