@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "render/progressive_render.h"
-#include "integrator/path_integrator.h"
+#include "integrator/render_settings.h"
+#include "render/progress_options.h"
 
 namespace wf {
 

@@ -106,13 +106,6 @@ void print_devices(std::ostream& out) {
             << " per buffer)\n    platform " << d.platform << ", " << d.version << ", driver " << d.driver << "\n";
 }
 
-RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
-                          ImageSize size, const RenderSettings& settings) {
-    Renderer renderer(device, scene, camera, size, settings);
-    renderer.render_to(settings.spp);
-    return RenderOutput{renderer.read(), renderer.summary()};
-}
-
 std::string cache_directory(const std::string& requested) {
     if (!requested.empty()) return requested;
     const std::optional<std::filesystem::path> fallback = ProgramCache::default_directory();

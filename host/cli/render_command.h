@@ -1,26 +1,13 @@
-// render_command.h — `wavefront render` and `wavefront devices`, and the
-// one-call render the tests use.
+// render_command.h — `wavefront render`, `wavefront devices` and
+// `wavefront cache`: what main.cpp runs for each command.
 #pragma once
 
 #include <iosfwd>
 
-#include "scene/camera.h"
 #include "cli/cli.h"
-#include "film/film.h"
-#include "device/opencl_device.h"
 #include "render/render_report.h"
-#include "scene/scene.h"
 
 namespace wf {
-
-struct RenderOutput {
-    FilmReadout film;
-    RenderSummary summary;
-};
-
-// Renders `settings.spp` samples per pixel in one round: what the tests use.
-RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
-                          ImageSize size, const RenderSettings& settings);
 
 // Runs one render as the options say: checkpoints as a table on `out` (and in
 // the CSV file), notes on `log`, the image written, and the summary returned.

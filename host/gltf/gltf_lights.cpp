@@ -5,13 +5,10 @@
 #include <cmath>
 
 #include "base/errors.h"
+#include "gltf/gltf_diagnostics.h"
 
 namespace wf {
 namespace {
-
-std::string label(const char* kind, size_t index, const std::string& name) {
-    return std::string(kind) + " " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
-}
 
 void store3(float* out, const glm::dvec3& v) {
     for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(v[k]);
@@ -26,13 +23,13 @@ std::vector<PunctualLight> punctual_lights(const tinygltf::Model& model, const s
         const tinygltf::Node& node = model.nodes.at(nw.node);
         const auto ext = node.extensions.find("KHR_lights_punctual");
         if (ext == node.extensions.end() || !ext->second.Has("light")) continue;
-        const std::string where = path + ": " + label("node", nw.node, node.name);
+        const std::string where = path + ": " + indexed_label("node", nw.node, node.name);
         const tinygltf::Value& index_value = ext->second.Get("light");
         const int index = index_value.IsNumber() ? index_value.GetNumberAsInt() : -1;
         if (index < 0 || size_t(index) >= model.lights.size())
             throw InputError(where + ": KHR_lights_punctual light " + std::to_string(index) + " does not exist");
         const tinygltf::Light& l = model.lights[size_t(index)];
-        const std::string what = where + ": " + label("light", size_t(index), l.name);
+        const std::string what = where + ": " + indexed_label("light", size_t(index), l.name);
 
         glm::dvec3 color(1.0);
         if (!l.color.empty()) {

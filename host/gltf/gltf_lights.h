@@ -10,15 +10,10 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "gltf/gltf_nodes.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {
-
-// A node the scene walk reached, with its world transform.
-struct NodeWorld {
-    size_t node;
-    glm::dmat4 world;
-};
 
 // One light per node in `nodes` that names one. Throws InputError naming
 // `path` and the node for a light index out of range, an unknown type, a

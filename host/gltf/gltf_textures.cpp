@@ -9,22 +9,15 @@
 #include <filesystem>
 
 #include "base/errors.h"
+#include "gltf/gltf_diagnostics.h"
 
 namespace wf {
 namespace {
 
-[[noreturn]] void fail(const std::string& where, const std::string& what) {
-    throw InputError(where + ": " + what);
-}
-
-std::string quoted_or_index(const char* kind, size_t index, const std::string& name) {
-    return std::string(kind) + " " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
-}
-
 // "image 2 'albedo.png'": the uri where there is one (not for data URIs,
 // which tinygltf does not keep), else the name.
 std::string image_label(const tinygltf::Image& image, size_t index) {
-    std::string label = quoted_or_index("image", index, image.uri.empty() ? image.name : image.uri);
+    std::string label = indexed_label("image", index, image.uri.empty() ? image.name : image.uri);
     if (image.bufferView >= 0) label += " (bufferView " + std::to_string(image.bufferView) + ")";
     return label;
 }
@@ -101,7 +94,7 @@ int32_t GltfTextures::texture_info(int index, bool srgb, const std::string& wher
     int32_t& made = infos_[size_t(index)][srgb ? 1 : 0];
     if (made >= 0) return made;
     const tinygltf::Texture& texture = model_.textures[size_t(index)];
-    const std::string texture_where = where + ": " + quoted_or_index("texture", size_t(index), texture.name);
+    const std::string texture_where = where + ": " + indexed_label("texture", size_t(index), texture.name);
     if (texture.source < 0 || size_t(texture.source) >= model_.images.size())
         fail(texture_where, "image " + std::to_string(texture.source) + " does not exist");
     const auto image_index = size_t(texture.source);

@@ -143,4 +143,11 @@ RenderSummary Renderer::summary() const {
     return s;
 }
 
+RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
+                          ImageSize size, const RenderSettings& settings) {
+    Renderer renderer(device, scene, camera, size, settings);
+    renderer.render_to(settings.spp);
+    return RenderOutput{renderer.read(), renderer.summary()};
+}
+
 } // namespace wf

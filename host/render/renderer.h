@@ -51,4 +51,13 @@ private:
     std::unique_ptr<PathIntegrator> scheduler_;
 };
 
+struct RenderOutput {
+    FilmReadout film;
+    RenderSummary summary;
+};
+
+// Renders `settings.spp` samples per pixel in one round: what the tests use.
+RenderOutput render_scene(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera,
+                          ImageSize size, const RenderSettings& settings);
+
 } // namespace wf

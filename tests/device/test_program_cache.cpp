@@ -13,7 +13,7 @@
 #include "device/kernel_program.h"
 #include "device/kernel_sources.h"
 #include "device/program_cache.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/test_support.h"
 
 namespace wf {

@@ -11,7 +11,7 @@
 
 #include "scene/environment_map.h"
 #include "gltf/gltf_loader.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "device/scene_features.h"
 #include "support/test_support.h"
 

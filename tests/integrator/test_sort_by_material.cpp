@@ -12,7 +12,7 @@
 #include "gltf/gltf_loader.h"
 #include "device/kernel_program.h"
 #include "integrator/stage_args.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/test_support.h"
 
 namespace wf {

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/test_support.h"
 
 namespace wf {

@@ -11,7 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "scene/environment_map.h"
-#include "cli/render_command.h"
+#include "image/error_metrics.h"
+#include "render/renderer.h"
 #include "support/statistics.h"
 #include "support/test_support.h"
 

@@ -13,7 +13,7 @@
 
 #include "support/closed_meshes.h"
 #include "scene/environment_map.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/statistics.h"
 #include "scene/texture_set.h"
 #include "support/test_support.h"

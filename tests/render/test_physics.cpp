@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "gltf/gltf_loader.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/test_support.h"
 
 namespace wf {

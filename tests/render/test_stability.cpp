@@ -28,7 +28,7 @@
 #include "base/errors.h"
 #include "gltf/gltf_loader.h"
 #include "device/kernel_sources.h"
-#include "cli/render_command.h"
+#include "render/renderer.h"
 #include "support/statistics.h"
 #include "support/test_support.h"
 

@@ -1,0 +1,97 @@
+// gltf_file.cpp — see gltf_file.h.
+#include "gltf/gltf_file.h"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_textures.h"
+
+namespace wf {
+namespace {
+
+// What tinygltf can take; checked on the file's size before reading it, and
+// on bytes handed in directly.
+void check_size(const std::string& path, uint64_t size) {
+    if (size == 0) fail(path, "empty file");
+    // tinygltf takes lengths as unsigned int.
+    if (size > std::numeric_limits<unsigned int>::max()) fail(path, "file larger than 4 GiB");
+}
+
+// External buffers and images must lie in the scene's folder or below it: a
+// file from anywhere must not make the renderer read files elsewhere
+// ("../../etc/passwd" as a buffer URI).
+struct SceneFolder {
+    std::filesystem::path root;
+    std::string refused; // the first file refused, for the message (tinygltf's own is cut to length)
+};
+
+bool read_inside_folder(std::vector<unsigned char>* out, std::string* error, const std::string& file, void* user) {
+    SceneFolder& folder = *static_cast<SceneFolder*>(user);
+    std::error_code ec;
+    const std::filesystem::path relative = std::filesystem::weakly_canonical(file, ec).lexically_relative(folder.root);
+    if (ec || relative.empty() || *relative.begin() == "..") {
+        if (folder.refused.empty()) folder.refused = file;
+        if (error) *error += "outside the scene's folder";
+        return false;
+    }
+    return tinygltf::ReadWholeFile(out, error, file, nullptr);
+}
+
+} // namespace
+
+std::vector<unsigned char> read_gltf_file(const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        fail(path, std::filesystem::exists(path, error) ? "not a regular file" : "no such file");
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in ? std::streamoff(in.tellg()) : -1;
+    if (size < 0) fail(path, "cannot read file");
+    check_size(path, uint64_t(size));
+    std::vector<unsigned char> bytes(static_cast<size_t>(size));
+    in.seekg(0);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) fail(path, "cannot read file");
+    return bytes;
+}
+
+tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
+    check_size(path, bytes.size());
+    // The magic decides, not the extension: a .gltf may well hold GLB bytes.
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const std::string base_dir = std::filesystem::path(path).parent_path().string();
+    const auto length = static_cast<unsigned int>(bytes.size());
+
+    tinygltf::TinyGLTF parser;
+    // Images are kept encoded; gltf_textures.cpp decodes those materials use,
+    // so a missing or broken image is reported with the material.
+    parser.SetImageLoader(keep_image_encoded, nullptr);
+    std::error_code ec;
+    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), ec), {}};
+    parser.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_inside_folder,
+                           &tinygltf::WriteWholeFile, &folder});
+    tinygltf::Model model;
+    std::string error;
+    std::string warning; // only about images, which gltf_textures.cpp reports itself
+    bool parsed = false;
+    try {
+        parsed = binary ? parser.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
+                                                      length, base_dir)
+                        : parser.LoadASCIIFromString(&model, &error, &warning,
+                                                     reinterpret_cast<const char*>(bytes.data()),
+                                                     length, base_dir);
+    } catch (const std::exception& e) { // tinygltf's own checks can throw (std::vector::at)
+        error = e.what();
+    }
+    if (!parsed && !folder.refused.empty())
+        fail(path, "refers to " + folder.refused + ", which lies outside the scene's folder");
+    if (!parsed) {
+        const std::string detail = one_line(error);
+        fail(path, std::string(binary ? "cannot load GLB" : "cannot load glTF") +
+                       (detail.empty() ? "" : ": " + detail));
+    }
+    return model;
+}
+
+} // namespace wf

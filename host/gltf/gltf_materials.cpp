@@ -1,0 +1,75 @@
+// gltf_materials.cpp — see gltf_materials.h.
+#include "gltf/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gltf/gltf_diagnostics.h"
+
+namespace wf {
+namespace {
+
+// tinygltf fills defaults but does not check every array's length.
+double element_or(const std::vector<double>& values, size_t i, double fallback) {
+    return i < values.size() ? values[i] : fallback;
+}
+
+// A number from a material extension's object, or `fallback` where the
+// extension or the property is absent.
+double extension_number(const tinygltf::Material& material, const char* extension_name,
+                        const char* property, double fallback) {
+    const auto extension = material.extensions.find(extension_name);
+    if (extension == material.extensions.end() || !extension->second.Has(property)) return fallback;
+    const tinygltf::Value& value = extension->second.Get(property);
+    return value.IsNumber() ? value.GetNumberAsDouble() : fallback;
+}
+
+// A factor that glTF defines on [0, 1]: NaN is an error, the rest is clamped.
+float unit_factor(double value, const std::string& where, const char* what) {
+    if (std::isnan(value)) fail(where, std::string(what) + " is NaN");
+    return float(std::clamp(value, 0.0, 1.0));
+}
+
+} // namespace
+
+SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
+                               const std::string& path) {
+    const std::string where = path + ": " + label("material", index, material.name);
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+    SceneMaterial converted;
+    converted.name = material.name;
+    converted.double_sided = material.doubleSided;
+    converted.metallic = unit_factor(pbr.metallicFactor, where, "metallicFactor");
+    converted.roughness = unit_factor(pbr.roughnessFactor, where, "roughnessFactor");
+    converted.transmission = unit_factor(
+        extension_number(material, "KHR_materials_transmission", "transmissionFactor", 0.0), where,
+        "transmissionFactor");
+    converted.specular = unit_factor(
+        extension_number(material, "KHR_materials_specular", "specularFactor", 1.0), where, "specularFactor");
+    // KHR_materials_ior allows 0 as "a perfect absorber"; that, and anything below 1, is not supported.
+    const double ior = extension_number(material, "KHR_materials_ior", "ior", 1.5);
+    if (!(ior >= 1.0 && ior < 1e3)) fail(where, "ior " + std::to_string(ior) + " is not in [1, 1000)");
+    converted.ior = float(ior);
+    const double strength = extension_number(material, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+    for (int c = 0; c < 3; ++c) {
+        converted.base_color[c] = unit_factor(element_or(pbr.baseColorFactor, size_t(c), 1.0), where,
+                                              "baseColorFactor");
+        const double emission = element_or(material.emissiveFactor, size_t(c), 0.0) * strength;
+        if (!std::isfinite(emission) || emission < 0.0)
+            fail(where, "emission must be finite and non-negative");
+        converted.emission[c] = float(emission);
+    }
+    return converted;
+}
+
+SceneMaterial default_material() {
+    SceneMaterial material;
+    material.name = "default";
+    material.base_color = glm::vec3(1.0f);
+    material.metallic = 1.0f;
+    material.roughness = 1.0f;
+    material.specular = 1.0f;
+    return material;
+}
+
+} // namespace wf

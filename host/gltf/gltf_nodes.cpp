@@ -1,0 +1,67 @@
+// gltf_nodes.cpp — see gltf_nodes.h.
+#include "gltf/gltf_nodes.h"
+
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gltf/gltf_diagnostics.h"
+
+namespace wf {
+
+std::optional<glm::dvec3> direction_of(const glm::dvec3& v) {
+    const double length = glm::length(v);
+    if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
+    return v / length;
+}
+
+glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where) {
+    glm::dmat4 transform(1.0);
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) fail(where, "matrix must have 16 numbers");
+        transform = glm::make_mat4(node.matrix.data()); // both column-major
+    } else {
+        if (!node.translation.empty() && node.translation.size() != 3)
+            fail(where, "translation must have 3 numbers");
+        if (!node.rotation.empty() && node.rotation.size() != 4)
+            fail(where, "rotation must have 4 numbers");
+        if (!node.scale.empty() && node.scale.size() != 3) fail(where, "scale must have 3 numbers");
+        if (!node.translation.empty())
+            transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
+        if (!node.rotation.empty()) { // glTF stores x, y, z, w; glm's constructor takes w first
+            const std::vector<double>& q = node.rotation;
+            transform *= glm::mat4_cast(glm::normalize(glm::dquat(q[3], q[0], q[1], q[2])));
+        }
+        if (!node.scale.empty())
+            transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+    }
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 4; ++row)
+            if (!std::isfinite(transform[column][row])) fail(where, "transform is not finite");
+    return transform;
+}
+
+SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& world,
+                           const std::string& where) {
+    const double yfov = camera.perspective.yfov;
+    if (!(yfov > 0.0 && yfov < glm::pi<double>())) fail(where, "yfov must lie in (0, pi)");
+    const std::optional<glm::dvec3> forward =
+        direction_of(glm::dvec3(world * glm::dvec4(0, 0, -1, 0)));
+    const glm::dvec3 up_axis(world * glm::dvec4(0, 1, 0, 0));
+    const std::optional<glm::dvec3> up =
+        forward ? direction_of(up_axis - glm::dot(up_axis, *forward) * *forward) : std::nullopt;
+    if (!up) fail(where, "its node's transform collapses the view direction");
+    SceneCamera converted;
+    converted.position = glm::vec3(world[3]);
+    converted.forward = glm::vec3(*forward);
+    converted.up = glm::vec3(*up);
+    converted.vertical_fov = float(yfov);
+    converted.aspect =
+        camera.perspective.aspectRatio > 0.0 ? float(camera.perspective.aspectRatio) : 0.0f;
+    return converted;
+}
+
+} // namespace wf
