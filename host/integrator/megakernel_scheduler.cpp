@@ -16,9 +16,10 @@ void MegakernelScheduler::render_to(uint32_t spp) {
     params_.spp = spp;
     set_stage_args(kernel_, stage_args());
     device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
-    // Rounds always run to their end, so every pixel now has the same count.
+    // Each launch finishes every sample it starts, so the samples done are
+    // those restored from a stopped render and those this render traced.
     const uint64_t wanted = uint64_t{params_.pixel_count} * spp;
-    while (stats_.samples < wanted && !stopping()) {
+    while (restored_samples_ + stats_.samples < wanted && !stopping()) {
         launch(STAGE_MEGAKERNEL, kernel_, pool_.size());
         const uint64_t before = stats_.samples;
         read_counters(WF_QUEUE_COUNT);

@@ -124,6 +124,12 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
     return counters;
 }
 
+void PathIntegrator::restore(const FilmState& film, const std::vector<uint32_t>& started) {
+    film_.restore(device_.queue, film);
+    pool_.restore_samples_started(device_.queue, started);
+    restored_samples_ = std::accumulate(started.begin(), started.end(), uint64_t{0});
+}
+
 void PathIntegrator::queue_every_slot() {
     const uint32_t pool = pool_.size();
     std::vector<cl_uint> all_slots(pool);

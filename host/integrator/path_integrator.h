@@ -99,6 +99,10 @@ public:
     Film& film() { return film_; }
     PathPool& pool() { return pool_; }
 
+    // Goes on from a stopped render: its film, and the samples each slot had
+    // started (which a stopped render has also finished).
+    void restore(const FilmState& film, const std::vector<uint32_t>& started);
+
     // Called after every read of the counters (a progress display).
     void on_progress(std::function<void(const RenderStats&)> f) { on_progress_ = std::move(f); }
 
@@ -127,6 +131,7 @@ protected:
     PathPool pool_;
     Film film_;
     RenderStats stats_;
+    uint64_t restored_samples_ = 0; // samples the film held before this render's first round (restore())
 
 private:
     std::vector<std::pair<Stage, cl::Event>> pending_; // launched since the last read

@@ -131,8 +131,7 @@ uint32_t Renderer::resume(const FilmState& state) {
                              " paths (pixel " + std::to_string(p) + ")");
         started[slot] += n;
     }
-    film.restore(device_.queue, state);
-    scheduler_->pool().restore_samples_started(device_.queue, started);
+    scheduler_->restore(state, started);
     return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
 }
 

@@ -187,11 +187,24 @@ TEST_F(Cli, StopsAtTheTimeBudgetOrTheTargetError) {
     const std::string small = "render " + kCornell + " --width 24 --height 24 ";
     ASSERT_EQ(run(small + "--time 1 --report " + path("t.csv") + " -o " + path("t.exr")).exit_code, 0);
     const std::string csv = test::read_file(path("t.csv"));
-    const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
-    const double seconds = std::stod(last);
-    const int spp = std::stoi(last.substr(last.find(',') + 1));
+    std::istringstream rows(csv.substr(csv.find('\n') + 1));
+    std::vector<double> seconds;
+    int spp = 0;
+    for (std::string row; std::getline(rows, row);) {
+        seconds.push_back(std::stod(row));
+        spp = std::stoi(row.substr(row.find(',') + 1));
+    }
+    ASSERT_GE(seconds.size(), 2u) << csv;
     EXPECT_GT(spp, 16) << "open-ended: --time without --spp is not capped at the default";
-    EXPECT_LT(seconds, 1.5) << csv;
+    // A round starts only while time is left, and is sized to what is left;
+    // bounded by this run's own round times, not by a wall-clock figure, so a
+    // loaded machine cannot fail it.
+    double longest_round = 0.0;
+    for (size_t i = 0; i + 1 < seconds.size(); ++i) {
+        EXPECT_LT(seconds[i], 1.0) << csv;
+        longest_round = std::max(longest_round, seconds[i] - (i ? seconds[i - 1] : 0.0));
+    }
+    EXPECT_LT(seconds.back(), 1.0 + 4.0 * longest_round + 0.5) << csv;
     auto in = OIIO::ImageInput::open(path("t.exr"));
     ASSERT_TRUE(in);
     EXPECT_EQ(in->spec().get_int_attribute("wavefront:samplesPerPixel"), spp);
