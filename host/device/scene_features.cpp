@@ -23,16 +23,13 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
 
 SceneFeatures scene_features(const Scene& scene) {
     SceneFeatures f;
-    f.textures = f.normal_maps = f.alpha_mask = f.emissive_triangles = false;
+    f.textures = f.normal_maps = f.alpha_mask = false;
     for (const SceneMaterial& m : scene.materials) {
         for (const TextureRef& ref : m.textures) f.textures = f.textures || ref.texture >= 0;
         f.normal_maps = f.normal_maps || m.textures[WF_TEXTURE_NORMAL].texture >= 0;
         f.alpha_mask = f.alpha_mask || m.alpha_mode == WF_ALPHA_MASK;
     }
-    for (uint32_t material : scene.triangle_material) {
-        const glm::vec3& e = scene.materials[material].emission;
-        f.emissive_triangles = f.emissive_triangles || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
-    }
+    f.emissive_triangles = scene.has_emissive_triangles();
     f.punctual_lights = !scene.punctual_lights.empty();
     f.environment = scene.environment != nullptr;
     return f;

@@ -127,13 +127,7 @@ EnvironmentMap constant_environment(float radiance) {
 }
 
 void light_unlit_scene(Scene& scene) {
-    if (scene.environment) return;
-    for (const PunctualLight& light : scene.punctual_lights)
-        if (light.intensity[0] > 0.0f || light.intensity[1] > 0.0f || light.intensity[2] > 0.0f) return;
-    for (uint32_t material : scene.triangle_material) {
-        const glm::vec3& e = scene.materials[material].emission;
-        if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) return;
-    }
+    if (scene.environment || scene.has_punctual_light() || scene.has_emissive_triangles()) return;
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     scene.warnings.push_back("the scene has no light; lit by a uniform white environment of radiance 1");
 }

@@ -42,6 +42,8 @@ struct SceneMaterial {
     uint32_t alpha_mode = WF_ALPHA_OPAQUE;
     float alpha_cutoff = 0.5f;          // for WF_ALPHA_MASK
     float base_alpha = 1.0f;            // baseColorFactor's alpha
+
+    bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
 struct SceneCamera {
@@ -81,6 +83,17 @@ struct Scene {
     std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
 
     size_t triangle_count() const { return triangle_material.size(); }
+    // The one answer to "is there an emitter": a triangle whose material emits.
+    bool has_emissive_triangles() const {
+        for (uint32_t material : triangle_material)
+            if (materials[material].emits()) return true;
+        return false;
+    }
+    bool has_punctual_light() const {
+        for (const PunctualLight& light : punctual_lights)
+            if (light.intensity[0] > 0.0f || light.intensity[1] > 0.0f || light.intensity[2] > 0.0f) return true;
+        return false;
+    }
     Bounds bounds() const {
         Bounds b;
         for (const glm::vec3& p : positions) b.grow(p);
