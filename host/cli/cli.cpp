@@ -9,6 +9,7 @@
 #include <OpenImageIO/argparse.h>
 
 #include "base/errors.h"
+#include "scene/camera.h"
 
 namespace wf {
 namespace {
@@ -40,16 +41,22 @@ double parse_positive(const std::string& flag, const std::string& text) {
     return value;
 }
 
-// The index of `text` among `choices`, which are listed in the error otherwise.
-uint32_t parse_choice(const std::string& flag, const std::string& text, std::initializer_list<const char*> choices) {
-    uint32_t i = 0;
+// The index of `text` among a choice's names (render_settings.h), which are
+// listed in the error otherwise.
+uint32_t parse_choice(const std::string& flag, const std::string& text, const ChoiceNames& names) {
     std::string listed;
-    for (const char* c : choices) {
-        if (text == c) return i;
-        listed += (i++ ? "|" : "") + std::string(c);
+    for (uint32_t i = 0; i < names.size() && names[i]; ++i) {
+        if (text == names[i]) return i;
+        listed += (i ? "|" : "") + std::string(names[i]);
     }
     throw InputError(flag + " " + text + ": expected one of " + listed);
 }
+
+// A flag's help with its default, read from the settings' own initialisers.
+std::string with_default(const std::string& help, const std::string& value) {
+    return help + " (default: " + value + ")";
+}
+std::string with_default(const std::string& help, uint32_t value) { return with_default(help, std::to_string(value)); }
 
 constexpr uint64_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
 
@@ -120,25 +127,25 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("filename").hidden().action([&](OIIO::cspan<const char*> a) { positional.emplace_back(a[0]); });
     ap.arg("-h").help("Print this help").store_true();
     ap.arg("--help").hidden().store_true();
-    ap.arg("-o OUT").help("Output image; the extension picks the format (default: render.png)");
-    ap.arg("--spp N").help("Samples per pixel (default: 16)");
-    ap.arg("--width N").help("Image width (default: 512, or from --height and the camera's aspect)");
+    ap.arg("-o OUT").help(with_default("Output image; the extension picks the format", o.output));
+    ap.arg("--spp N").help(with_default("Samples per pixel", o.settings.spp));
+    ap.arg("--width N").help(with_default("Image width", std::to_string(kDefaultImageWidth) + ", or from --height and the camera's aspect"));
     ap.arg("--height N").help("Image height (default: from the width and the camera's aspect)");
     ap.arg("--max-depth N").help("Bounces per path; 1 is direct lighting only (default: unlimited, ended by roulette)");
-    ap.arg("--seed N").help("Random seed; the same seed and device give the same bytes (default: 0)");
+    ap.arg("--seed N").help(with_default("Random seed; the same seed and device give the same bytes", o.settings.seed));
     ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
-    ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: 262144)");
+    ap.arg("--pool-size N").help(with_default("Paths in flight, at most the pixel count", kDefaultPoolSize));
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
-    ap.arg("--integrator I").help("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image (default: wavefront)");
-    ap.arg("--schedule S").help("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X) (default: refill)");
+    ap.arg("--integrator I").help(with_default("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image", integrator_name(o.settings.integrator)));
+    ap.arg("--schedule S").help(with_default("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X)", schedule_name(o.settings.schedule)));
     ap.arg("--sort-materials").store_true().help("Sort the paths by the material they hit before shading, wavefront only (default: off)");
-    ap.arg("--queue-push P").help("How kernels append to queues: group (one atomic per work-group), atomic (one per item) or scan (prefix sum) (default: group)");
-    ap.arg("--local-size N").help("Work-items per work-group, 16 to 1024 (default: 64)");
+    ap.arg("--queue-push P").help(with_default("How kernels append to queues: group (one atomic per work-group), atomic (one per item) or scan (prefix sum)", queue_push_name(o.settings.queue_push)));
+    ap.arg("--local-size N").help(with_default("Work-items per work-group, 16 to 1024", o.settings.local_size));
     ap.arg("--stats-json FILE").help("Write the render's statistics as JSON: stage times, rays, counters per iteration (default: none)");
     ap.separator("Sampling techniques:");
-    ap.arg("--light-sampling T").help("How emitters are found: bsdf, nee or mis (default: mis)");
-    ap.arg("--hemisphere H").help("Lambertian sampling: uniform or cosine (default: cosine)");
-    ap.arg("--sampler S").help("Sample values: independent or sobol (Owen-scrambled) (default: independent)");
+    ap.arg("--light-sampling T").help(with_default("How emitters are found: bsdf, nee or mis", choice_name(kLightSamplingNames, o.settings.light_sampling)));
+    ap.arg("--hemisphere H").help(with_default("Lambertian sampling: uniform or cosine", choice_name(kHemisphereNames, o.settings.hemisphere)));
+    ap.arg("--sampler S").help(with_default("Sample values: independent or sobol (Owen-scrambled)", choice_name(kSamplerNames, o.settings.sampler)));
     ap.arg("--env FILE").help("Environment light: an equirectangular .exr or .hdr, importance-sampled (default: none; a scene without any light gets a uniform white one)");
     ap.arg("--env-uniform L").help("Environment light of the same radiance L from every direction, instead of --env (default: none)");
     ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
@@ -179,28 +186,28 @@ CommandLine parse_command_line(int argc, const char** argv) {
     if (!text("camera").empty()) o.camera = static_cast<int>(parse_count("--camera", text("camera"), 0, 1u << 20));
     o.device = text("device");
     if (!text("light-sampling").empty())
-        o.settings.light_sampling = parse_choice("--light-sampling", text("light-sampling"), {"bsdf", "nee", "mis"});
+        o.settings.light_sampling = parse_choice("--light-sampling", text("light-sampling"), kLightSamplingNames);
     if (!text("hemisphere").empty())
-        o.settings.hemisphere = parse_choice("--hemisphere", text("hemisphere"), {"uniform", "cosine"});
+        o.settings.hemisphere = parse_choice("--hemisphere", text("hemisphere"), kHemisphereNames);
     if (!text("sampler").empty())
-        o.settings.sampler = parse_choice("--sampler", text("sampler"), {"independent", "sobol"});
+        o.settings.sampler = parse_choice("--sampler", text("sampler"), kSamplerNames);
     if (!text("aov").empty()) {
-        parse_choice("--aov", text("aov"), {"bounces"});
+        parse_choice("--aov", text("aov"), ChoiceNames{"bounces"});
         o.settings.bounce_layers = 8;
     }
     if (!text("integrator").empty())
         o.settings.integrator =
-            static_cast<Integrator>(parse_choice("--integrator", text("integrator"), {"wavefront", "megakernel"}));
+            static_cast<Integrator>(parse_choice("--integrator", text("integrator"), kIntegratorNames));
     if (!text("schedule").empty()) {
         o.settings.schedule =
-            static_cast<Schedule>(parse_choice("--schedule", text("schedule"), {"refill", "passes", "fullest"}));
+            static_cast<Schedule>(parse_choice("--schedule", text("schedule"), kScheduleNames));
         if (o.settings.integrator == Integrator::Megakernel)
             throw InputError("--schedule orders the wavefront's stages; the megakernel has none");
     }
     if (!text("local-size").empty()) o.settings.local_size = parse_count("--local-size", text("local-size"), 16, 1024);
     if (!text("queue-push").empty())
         o.settings.queue_push =
-            static_cast<QueuePush>(parse_choice("--queue-push", text("queue-push"), {"group", "atomic", "scan"}));
+            static_cast<QueuePush>(parse_choice("--queue-push", text("queue-push"), kQueuePushNames));
     o.settings.sort_materials = ap["sort-materials"].get<int>();
     if (o.settings.sort_materials && o.settings.integrator == Integrator::Megakernel)
         throw InputError("--sort-materials sorts the wavefront's queue; the megakernel has none");

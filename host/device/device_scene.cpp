@@ -72,7 +72,6 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     const auto add_light = [&](uint32_t kind, uint32_t index, double power) {
         d.lights.push_back(LightEntry{0.0f, 0u, index, 0.0f, kind, {0u, 0u, 0u}});
         light_weights.push_back(power);
-        d.emitted_power += power;
     };
     for (size_t i = 0; i < n; ++i) {
         const uint32_t t = bvh.order[i];

@@ -28,7 +28,6 @@ struct DeviceSceneData {
     uint32_t emissive_triangles = 0;          // the first entries of `lights`
     uint32_t environment_light = WF_NO_LIGHT; // its entry in `lights`
     float scene_diameter = 0.0f;              // of the triangles' bounds
-    double emitted_power = 0.0;               // W, summed over the three channels' mean
 
     size_t bytes() const;                // device memory the buffers will take
     size_t largest_buffer_bytes() const; // the largest single allocation among them

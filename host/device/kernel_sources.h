@@ -9,7 +9,7 @@
 namespace wf {
 
 struct EmbeddedFile {
-    const char* path; // relative to kernels/ or include/, e.g. "stages/shade.cl"
+    const char* path; // relative to kernels/ or include/, e.g. "stages/shade.h"
     const char* text;
 };
 

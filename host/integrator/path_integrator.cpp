@@ -13,7 +13,6 @@ namespace {
 constexpr const char* kStageNames[STAGE_COUNT] = {"generate",   "intersect",        "shade",     "intersect_shadow",
                                                   "roulette",   "accumulate",       "sort_by_material",
                                                   "megakernel"};
-constexpr uint32_t kDefaultPoolSize = 1u << 18;
 
 double event_seconds(const cl::Event& e) {
     const cl_ulong start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();

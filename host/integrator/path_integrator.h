@@ -38,7 +38,7 @@ enum Stage {
     STAGE_INTERSECT_SHADOW,
     STAGE_ROULETTE,
     STAGE_ACCUMULATE,
-    STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.cl)
+    STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.h)
     STAGE_MEGAKERNEL,
     STAGE_COUNT
 };

@@ -44,6 +44,9 @@ inline const char* integrator_name(Integrator i) { return choice_name(kIntegrato
 inline const char* schedule_name(Schedule s) { return choice_name(kScheduleNames, static_cast<uint32_t>(s)); }
 inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushNames, static_cast<uint32_t>(p)); }
 
+// Paths in flight when the command line names none (at most the pixel count).
+constexpr uint32_t kDefaultPoolSize = 1u << 18;
+
 struct RenderSettings {
     uint32_t spp = 16;
     uint32_t max_depth = WF_UNLIMITED_DEPTH;

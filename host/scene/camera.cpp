@@ -8,7 +8,7 @@ namespace wf {
 
 ImageSize resolve_image_size(uint32_t width, uint32_t height, const std::optional<SceneCamera>& camera) {
     const float aspect = camera && camera->aspect > 0.0f ? camera->aspect : 1.0f;
-    if (width == 0 && height == 0) width = 512;
+    if (width == 0 && height == 0) width = kDefaultImageWidth;
     if (width == 0) width = std::max(1u, static_cast<uint32_t>(std::lround(height * aspect)));
     if (height == 0) height = std::max(1u, static_cast<uint32_t>(std::lround(width / aspect)));
     return {width, height};

@@ -17,6 +17,9 @@ struct ImageSize {
 };
 
 // 0 means "not given". The default width is 512.
+// The width when neither side is asked for.
+constexpr uint32_t kDefaultImageWidth = 512;
+
 ImageSize resolve_image_size(uint32_t width, uint32_t height, const std::optional<SceneCamera>& camera);
 
 // A camera looking down −z at the bounds, far enough back to see all of them.

@@ -2,9 +2,11 @@
  * the queues, the statistics counters, and the path state of every slot.
  *
  * The path state is a structure of arrays declared once, by WF_PATH_STATE: the
- * host allocates one buffer per field (host/integrator/path_pool.cpp) and every stage
- * kernel takes them as one parameter list (kernels/path_state.h) in this
- * order, so host and device cannot disagree on what a slot holds. */
+ * host allocates one buffer per field (host/integrator/path_pool.cpp) and sets
+ * them in the same order (host/integrator/stage_args.cpp); every stage kernel takes them
+ * in this order within WF_STAGE_PARAMS (kernels/kernel_params.h), and the stage
+ * functions see them as one PathState (kernels/path_state.h), so host and
+ * device cannot disagree on what a slot holds. */
 #ifndef WAVEFRONT_PATH_STATE_H
 #define WAVEFRONT_PATH_STATE_H
 

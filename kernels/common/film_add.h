@@ -4,7 +4,7 @@
  * separately without feeding it back fails for a constant signal: every
  * rounding error has the same sign, the compensation grows and rounds itself.
  * The film reads sum + compensation. Deterministic, since each pixel has one
- * writer adding its samples in order (see stages/generate.cl). */
+ * writer adding its samples in order (see stages/generate.h). */
 #ifndef WF_FILM_ADD_H
 #define WF_FILM_ADD_H
 

@@ -2,6 +2,8 @@
 // input, and traversal answers exactly what brute force over every triangle
 // answers with the same triangle test and the same rule for choosing among
 // hits: the same triangle, the same t to the bit, the same any-hit verdict.
+// Over 400 lines on purpose: every test runs the one brute-force harness and
+// the tree walk that checks the builder, both defined here.
 #include <algorithm>
 #include <cmath>
 #include <cstring>

@@ -8,6 +8,8 @@
 //     mirror lose nothing;
 //  5. Dirac lobes reflect and refract exactly, with total internal reflection;
 //  6. no NaN or Inf at any roughness, at grazing or normal incidence.
+// Over 400 lines on purpose: the six properties are checked over one list of
+// materials and one set of sampled tables, computed once for all of them.
 #include <array>
 #include <cmath>
 #include <cstdio>

@@ -35,7 +35,7 @@ struct SurfacePoint {
     Corners corners;
     vec3 position;
     vec3 error;
-    vec3 normal;      // unit, from float arithmetic as in shade.cl
+    vec3 normal;      // unit, from float arithmetic as in kernels/stages/shade.h
     dvec3 true_normal; // unit, of the float corners, in double
 };
 

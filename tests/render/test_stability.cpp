@@ -9,6 +9,9 @@
 // estimate is noisy and is tight where it is not; the device functions under
 // test (film_add, is_finite_bits) are run directly on PoCL against exact host
 // results.
+//
+// Over 400 lines on purpose: the cases are one list, read as a whole, and
+// share the twin-render and finiteness checks at the top.
 #include <cmath>
 #include <cstring>
 #include <filesystem>
