@@ -140,10 +140,11 @@ TEST_F(Interrupt, ResumeRefusesAPartialRenderOfOtherOptions) {
     EXPECT_FALSE(fs::exists(path("other.exr")));
 }
 
-// The first signal (SIGTERM) asks for a clean stop, the second (SIGINT)
-// ends the process at once: its exit code says which ended it, 143 for the
-// clean stop, 130 for the second signal, with no clock involved. Two signals
-// of one kind could merge while pending; these cannot.
+// The first signal asks for a clean stop, which writes the image; the second
+// ends the process at once, with 128 + its number and no image. Two signals of
+// one kind could merge while pending, so two kinds are sent; on a loaded
+// machine both may be pending together, and Linux then delivers the lower
+// number (SIGINT) first, so either may be the second. No clock is involved.
 TEST_F(Interrupt, ASecondSignalEndsAtOnce) {
     const std::string output = path("out.exr");
     std::vector<std::string> args = render_args(output, 1u << 20);
@@ -153,7 +154,8 @@ TEST_F(Interrupt, ASecondSignalEndsAtOnce) {
     ASSERT_TRUE(appears(partial_render_path(output))) << "no checkpoint while rendering";
     ::kill(pid, SIGTERM);
     ::kill(pid, SIGINT);
-    EXPECT_EQ(wait_for(pid), 128 + SIGINT);
+    const int status = wait_for(pid);
+    EXPECT_TRUE(status == 128 + SIGINT || status == 128 + SIGTERM) << "exit " << status;
     EXPECT_FALSE(fs::exists(output)) << "the clean stop went on after the second signal";
 }
 
