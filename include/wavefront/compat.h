@@ -6,7 +6,8 @@
  * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
  * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, acos,
  * atan2, floor, pow and copysign, clz, and WF_GLOBAL for the address space of
- * scene buffers. For SIMD inside a work-item (the BVH traversal): float4 and
+ * scene buffers, WF_CONSTANT for tables at program scope. For SIMD inside a
+ * work-item (the BVH traversal): float4 and
  * int4 lanes with their arithmetic, max and fabs, the relational
  * built-ins isless, isgreater, islessequal and isequal (-1 or 0 per lane),
  * select, vload4 and vstore4; float8 lanes minus or times a scalar, min, max,
@@ -24,6 +25,7 @@
 typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
+#define WF_CONSTANT __constant
 #define WF_INLINE inline
 /* For the traversal's inner loop, which PoCL's inliner otherwise leaves as calls. */
 #define WF_FORCE_INLINE inline __attribute__((always_inline))
@@ -55,6 +57,7 @@ WF_INLINE uint lane_bits8(int8 m) { return lane_bits4(m.lo) | lane_bits4(m.hi) <
 #include <glm/glm.hpp>
 
 #define WF_GLOBAL
+#define WF_CONSTANT static const
 #define WF_INLINE inline
 #define WF_FORCE_INLINE inline
 #define WF_PREFETCH(p) __builtin_prefetch(p)

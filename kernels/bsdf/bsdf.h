@@ -27,13 +27,26 @@
  *    Radiance). With it the BTDF obeys f(wo,wi)/n_o^2 = f(wi,wo)/n_i^2, n_o and
  *    n_i the indices on the sides of wo and wi (Veach's thesis, 5.14); the white furnace of a clear
  *    dielectric returns 1 only once the eta'^2 is multiplied back.
+ *  - energy compensation (bsdf/albedo.h): a GGX interface of one scattering
+ *    event reflects only E(mu) of a white light, losing up to 60% at
+ *    roughness 1. A lobe of multiple scattering (Kulla and Conty 2017),
+ *    C (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)), outside only, returns it:
+ *    C = metallic MS(base, 1) + (1 - metallic)(1 - transmission) MS(F0_d, F90_d),
+ *    MS the multiple-scattering colour of a Schlick interface. A white metal
+ *    then reflects exactly 1 at every roughness.
  *  - the diffuse base, outside only: (1 - metallic)(1 - transmission) base / pi
- *    (1 - F_d(wo.z)) (1 - F_d(wi.z)). glTF's reference code weighs the diffuse
- *    by 1 - F(wo.wh); that product is not bounded by 1 - F(wo.z) and makes
- *    white materials reflect more than they receive at grazing angles (albedo
- *    1.7 at wo.z = 0.05 for a smooth one), so the two directions' Fresnel
- *    transmittances are used instead: reciprocal, and below 1 - F(wo.z).
- *
+ *    (1 - L(mu_o))(1 - L(mu_i)) / (1 - L_avg), L the dielectric layer's whole
+ *    albedo (single scattering with Schlick's F_d plus its multiple scattering)
+ *    and L_avg its hemispherical average: what the layer does not reflect goes
+ *    into the base, and what the base sends back leaves through the layer in
+ *    the same proportion, so that a white dielectric reflects exactly 1 and the
+ *    lobe stays reciprocal (the albedo scaling of OpenPBR and of Blender's
+ *    Principled BSDF). glTF's reference code weighs the diffuse by
+ *    1 - F(wo.wh) instead, which is neither bounded nor energy-conserving.
+ *    A transmissive material's layer reflects with the exact F_d; its diffuse
+ *    part (1 - transmission) is still weighed with Schlick's, an approximation
+ *    of well under 1% of its albedo, and the multiple scattering of a rough
+ *    refracting interface is not compensated (that needs tables over ior too).
  * The smooth limit: below alpha = WF_BSDF_DELTA_ALPHA (roughness 0.0316), or
  * for a transmissive material of ior exactly 1, the interface is a Dirac
  * mirror and a Dirac refraction (Snell), chosen in proportion to R and T at
@@ -43,9 +56,10 @@
  * or MIS-weigh them. bsdf_is_delta: every lobe is Dirac (NEE is useless).
  *
  * Sampling, one sample of a mixture: the interface with probability p_int, in
- * proportion to the luminances of R(wo.z) + T(wo.z) against the diffuse
- * (1 - metallic)(1 - transmission) base (1 - F_d(wo.z)), at least
- * WF_BSDF_MIN_INTERFACE_PROBABILITY while a diffuse lobe is there, 1 where
+ * proportion to the luminances of R(wo.z) + T(wo.z) against the albedo of the
+ * diffuse and multiple-scattering lobes at wo.z, which are sampled together by
+ * the hemisphere sampler; at least
+ * WF_BSDF_MIN_INTERFACE_PROBABILITY while such a lobe is there, 1 where
  * none is, and 0 where the interface neither reflects nor transmits (specular
  * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
  * reflects or refracts in proportion to the luminances of R and T at wo.wm.
@@ -62,6 +76,7 @@
 #include "wavefront/compat.h"
 #include "wavefront/path_state.h"
 #include "common/sampling.h"
+#include "bsdf/albedo.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 
@@ -115,14 +130,62 @@ WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
     return ((1.0f - p->metallic) * (1.0f - p->transmission)) * p->base_color;
 }
 
+/* The dielectric layer's Schlick F0 and F90. */
+WF_INLINE float3 bsdf_layer_f0(const BsdfParams* p) { return bsdf_gray(p->specular * fresnel_f0(p->ior)); }
+
+/* The interface's albedo tables at one material: {E, B} at mu_o and averaged. */
+typedef struct BsdfAlbedo {
+    float2 at_o;
+    float2 average;
+    float3 multiple_color; /* C of the multiple-scattering lobe */
+    float3 layer_o;        /* L(mu_o), the dielectric layer's whole albedo */
+    float3 layer_average;  /* L_avg */
+} BsdfAlbedo;
+
+/* L at one cosine from its {E, B}, or L_avg from the averages. */
+WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, float2 eb, float e_average) {
+    const float3 f0 = bsdf_layer_f0(p);
+    return schlick_albedo(eb, f0, p->specular) + multiple_scattering_color(f0, p->specular, e_average) * (1.0f - eb.x);
+}
+
+WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
+    BsdfAlbedo a;
+    a.at_o = ggx_albedo(fabs(mu_o), p->roughness);
+    a.average = ggx_albedo_average(p->roughness);
+    const float e_avg = a.average.x;
+    /* A Dirac interface loses nothing, and its lobes must stay Dirac alone. */
+    a.multiple_color = bsdf_interface_smooth(p)
+                           ? bsdf_gray(0.0f)
+                           : p->metallic * multiple_scattering_color(p->base_color, 1.0f, e_avg) +
+                                 ((1.0f - p->metallic) * (1.0f - p->transmission)) *
+                                     multiple_scattering_color(bsdf_layer_f0(p), p->specular, e_avg);
+    a.layer_o = bsdf_layer_albedo(p, a.at_o, e_avg);
+    a.layer_average = bsdf_layer_albedo(p, a.average, e_avg);
+    return a;
+}
+
+/* The diffuse and multiple-scattering lobes together, wo.z > 0 and wi.z > 0. */
+WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAlbedo* a, float mu_i) {
+    const float2 at_i = ggx_albedo(mu_i, p->roughness);
+    const float3 one = bsdf_gray(1.0f);
+    const float3 layer_i = bsdf_layer_albedo(p, at_i, a->average.x);
+    const float3 diffuse = bsdf_diffuse_albedo(p) * (one - a->layer_o) * (one - layer_i) /
+                           (WF_PI * max(one - a->layer_average, bsdf_gray(WF_ALBEDO_MIN_LOSS)));
+    return diffuse + a->multiple_color * multiple_scattering_lobe(a->at_o.x, at_i.x, a->average.x);
+}
+
+/* The albedo at wo of what bsdf_base_eval gives, outside. */
+WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAlbedo* a) {
+    return bsdf_diffuse_albedo(p) * (bsdf_gray(1.0f) - a->layer_o) + a->multiple_color * (1.0f - a->at_o.x);
+}
+
 /* The probability that sampling chooses the interface rather than the diffuse lobe. */
-WF_INLINE float bsdf_interface_probability(const BsdfParams* p, float3 wo) {
-    const float e_diffuse =
-        wo.z > 0.0f ? bsdf_luminance(bsdf_diffuse_albedo(p)) * (1.0f - bsdf_layer_fresnel(p, wo.z)) : 0.0f;
-    if (!(e_diffuse > 0.0f)) return 1.0f;
+WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
+    const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) : 0.0f;
+    if (!(e_base > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
     if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
-    return max(e_interface / (e_interface + e_diffuse), WF_BSDF_MIN_INTERFACE_PROBABILITY);
+    return max(e_interface / (e_interface + e_base), WF_BSDF_MIN_INTERFACE_PROBABILITY);
 }
 
 /* The probability of reflecting rather than refracting, given R and T. */
@@ -192,16 +255,15 @@ WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float*
     *pdf = 0.0f;
     float3 f = bsdf_gray(0.0f);
     if (!(p->transmission > 0.0f) && !(wo.z > 0.0f)) return f;
-    const float p_interface = bsdf_interface_probability(p, wo);
+    const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
+    const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (!bsdf_interface_smooth(p)) {
         float pdf_interface;
         f = bsdf_interface_eval(p, wo, wi, &pdf_interface);
         *pdf = p_interface * pdf_interface;
     }
-    const float3 albedo = bsdf_diffuse_albedo(p);
-    if (wo.z > 0.0f && wi.z > 0.0f && albedo.x + albedo.y + albedo.z > 0.0f) {
-        const float weight = (1.0f - bsdf_layer_fresnel(p, wo.z)) * (1.0f - bsdf_layer_fresnel(p, wi.z)) * WF_INV_PI;
-        f = f + albedo * weight;
+    if (wo.z > 0.0f && wi.z > 0.0f) {
+        f = f + bsdf_base_eval(p, &albedo, wi.z);
         *pdf += (1.0f - p_interface) * bsdf_diffuse_pdf(p, wi);
     }
     return f;
@@ -230,7 +292,8 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
     s.pdf = 0.0f;
     s.delta = 0;
     if (wo.z == 0.0f || (!(p->transmission > 0.0f) && !(wo.z > 0.0f))) return s;
-    const float p_interface = bsdf_interface_probability(p, wo);
+    const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
+    const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (u.x < p_interface) {
         /* u.x / p_interface is uniform again: it picks reflection or refraction. */
         const float u_choice = min(u.x / p_interface, 0x1.fffffep-1f);

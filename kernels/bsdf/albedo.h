@@ -1,0 +1,81 @@
+/* albedo.h — how much light the GGX interface reflects in all, from the
+ * generated tables of bsdf/albedo_tables.h; what energy conservation in
+ * bsdf.h is built from. Shared by the kernels and the host.
+ *
+ *  - ggx_albedo(mu, r): {E, B} at view cosine mu and roughness r, bilinear in
+ *    (sqrt(mu), r), the tables' grid. E is the single-scattering albedo of a
+ *    white interface (F = 1), B that with Schlick's weight (1 - c)^5 as F;
+ *    a Schlick interface F0 + (F90 - F0)(1 - c)^5 reflects F0 (E - B) + F90 B
+ *    (schlick_albedo).
+ *  - ggx_albedo_average(r): their hemispherical averages 2 ∫ E mu dmu, of the
+ *    same interpolant, so the lobes below integrate exactly.
+ *  - multiple_scattering_color: the energy that bounces between microfacets
+ *    return, F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg the average of
+ *    Schlick's F (Kulla and Conty, "Revisiting Physically Based Shading at
+ *    Imageworks", 2017). The lobe it scales, (1 - E(mu_o))(1 - E(mu_i)) /
+ *    (pi (1 - E_avg)), has albedo 1 - E(mu_o): a white interface with it
+ *    reflects exactly 1, and it is reciprocal. */
+#ifndef WF_BSDF_ALBEDO_H
+#define WF_BSDF_ALBEDO_H
+
+#include "wavefront/compat.h"
+#include "common/sampling.h"
+#include "bsdf/albedo_tables.h"
+
+WF_DEVICE_BEGIN
+
+/* Below this 1 - E_avg the interface is a mirror: no multiple scattering. */
+#define WF_ALBEDO_MIN_LOSS 1e-6f
+
+/* The grid cell and weight of x in [0, 1] on WF_ALBEDO_SIZE points. */
+WF_INLINE int albedo_cell(float x, float* t) {
+    const float s = min(max(x, 0.0f), 1.0f) * (float)(WF_ALBEDO_SIZE - 1);
+    const int i = (int)s < WF_ALBEDO_SIZE - 2 ? (int)s : WF_ALBEDO_SIZE - 2;
+    *t = s - (float)i;
+    return i;
+}
+
+WF_INLINE float2 ggx_albedo(float mu, float roughness) {
+    float tm, tr;
+    const int m = albedo_cell(sqrt(max(mu, 0.0f)), &tm), r = albedo_cell(roughness, &tr);
+    float2 v[2];
+    for (int k = 0; k < 2; ++k) {
+        const float e0 = ggx_albedo_table[r + k][m][0], e1 = ggx_albedo_table[r + k][m + 1][0];
+        const float b0 = ggx_albedo_table[r + k][m][1], b1 = ggx_albedo_table[r + k][m + 1][1];
+        v[k] = make_float2(e0 + tm * (e1 - e0), b0 + tm * (b1 - b0));
+    }
+    return v[0] + tr * (v[1] - v[0]);
+}
+
+WF_INLINE float2 ggx_albedo_average(float roughness) {
+    float tr;
+    const int r = albedo_cell(roughness, &tr);
+    const float2 a = make_float2(ggx_albedo_average_table[r][0], ggx_albedo_average_table[r][1]);
+    const float2 b = make_float2(ggx_albedo_average_table[r + 1][0], ggx_albedo_average_table[r + 1][1]);
+    return a + tr * (b - a);
+}
+
+/* The single-scattering albedo of a Schlick interface, from {E, B}. */
+WF_INLINE float3 schlick_albedo(float2 eb, float3 f0, float f90) {
+    return f0 * (eb.x - eb.y) + make_float3(f90, f90, f90) * eb.y;
+}
+
+/* Schlick's F averaged over the hemisphere, 2 ∫ F mu dmu: (1 - c)^5 averages 1/21. */
+WF_INLINE float3 schlick_average(float3 f0, float f90) {
+    return f0 + (make_float3(f90, f90, f90) - f0) * (1.0f / 21.0f);
+}
+
+WF_INLINE float3 multiple_scattering_color(float3 f0, float f90, float e_avg) {
+    const float3 f = schlick_average(f0, f90);
+    return f * f * e_avg / (make_float3(1.0f, 1.0f, 1.0f) - f * (1.0f - e_avg));
+}
+
+/* (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)) without the colour. */
+WF_INLINE float multiple_scattering_lobe(float e_o, float e_i, float e_avg) {
+    const float loss = 1.0f - e_avg;
+    return loss > WF_ALBEDO_MIN_LOSS ? (1.0f - e_o) * (1.0f - e_i) / (WF_PI * loss) : 0.0f;
+}
+
+WF_DEVICE_END
+
+#endif /* WF_BSDF_ALBEDO_H */
