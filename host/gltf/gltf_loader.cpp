@@ -16,6 +16,8 @@
 // puts the scene together.
 #include "gltf/gltf_loader.h"
 
+#include <map>
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -66,11 +68,17 @@ private:
     // default material, if needed, comes after them.
     void convert_materials() {
         GltfTextures textures(model_, path_, scene_.textures);
+        std::map<std::string, size_t> unsupported; // property -> materials that set it
         for (size_t i = 0; i < model_.materials.size(); ++i) {
             scene_.materials.push_back(convert_material(model_.materials[i], i, path_));
             textures.convert(model_.materials[i], i, scene_.materials.back()); // gltf_textures.h
+            for (const std::string& property : unsupported_properties(model_.materials[i])) ++unsupported[property];
         }
         for (std::string& warning : textures.warnings()) scene_.warnings.push_back(std::move(warning));
+        std::string ignored;
+        for (const auto& [property, materials] : unsupported)
+            ignored += (ignored.empty() ? "" : ", ") + property + " (" + std::to_string(materials) + " material(s))";
+        if (!ignored.empty()) scene_.warnings.push_back("material properties not supported, ignored: " + ignored);
     }
 
     uint32_t material_index(int gltf_material, const std::string& where) {

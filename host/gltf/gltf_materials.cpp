@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "gltf/gltf_diagnostics.h"
 
@@ -60,6 +62,33 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
         converted.emission[c] = float(emission);
     }
     return converted;
+}
+
+std::vector<std::string> unsupported_properties(const tinygltf::Material& material) {
+    // Properties of supported extensions that are read nowhere, with the
+    // default each may carry without changing the image.
+    struct Property {
+        const char* extension;
+        const char* name;
+    };
+    static const Property kIgnored[] = {{"KHR_materials_specular", "specularColorFactor"},
+                                        {"KHR_materials_specular", "specularTexture"},
+                                        {"KHR_materials_specular", "specularColorTexture"},
+                                        {"KHR_materials_transmission", "transmissionTexture"}};
+    std::vector<std::string> found;
+    for (const Property& p : kIgnored) {
+        const auto extension = material.extensions.find(p.extension);
+        if (extension == material.extensions.end() || !extension->second.Has(p.name)) continue;
+        const tinygltf::Value& value = extension->second.Get(p.name);
+        if (std::string(p.name) == "specularColorFactor" && value.IsArray() && value.ArrayLen() == 3) {
+            bool white = true;
+            for (size_t c = 0; c < 3; ++c)
+                white = white && value.Get(int(c)).IsNumber() && value.Get(int(c)).GetNumberAsDouble() == 1.0;
+            if (white) continue;
+        }
+        found.push_back(std::string(p.extension) + "." + p.name);
+    }
+    return found;
 }
 
 SceneMaterial default_material() {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <tiny_gltf.h>
 
@@ -14,6 +15,11 @@
 namespace wf {
 
 SceneMaterial convert_material(const tinygltf::Material& material, size_t index, const std::string& path);
+
+// The properties of the extensions above that the renderer does not read
+// and that the material sets (e.g. "KHR_materials_specular.specularTexture"):
+// the loader warns about each once.
+std::vector<std::string> unsupported_properties(const tinygltf::Material& material);
 
 // glTF's defaults for a primitive without a material: white, metallic 1,
 // roughness 1 (glTF 2.0, section 3.9.6), not emissive.

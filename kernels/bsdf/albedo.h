@@ -24,8 +24,11 @@
 
 WF_DEVICE_BEGIN
 
-/* Below this 1 - E_avg the interface is a mirror: no multiple scattering. */
-#define WF_ALBEDO_MIN_LOSS 1e-6f
+/* Below this 1 - E_avg (roughness under about 0.12) multiple scattering is
+ * left out: it would return at most 0.1%, from a lobe peaked at grazing
+ * angles that the cosine sampling of bsdf.h would meet with weights in the
+ * thousands. */
+#define WF_ALBEDO_MIN_LOSS 1e-3f
 
 /* The grid cell and weight of x in [0, 1] on WF_ALBEDO_SIZE points. */
 WF_INLINE int albedo_cell(float x, float* t) {
@@ -66,6 +69,7 @@ WF_INLINE float3 schlick_average(float3 f0, float f90) {
 }
 
 WF_INLINE float3 multiple_scattering_color(float3 f0, float f90, float e_avg) {
+    if (!(1.0f - e_avg > WF_ALBEDO_MIN_LOSS)) return make_float3(0.0f, 0.0f, 0.0f);
     const float3 f = schlick_average(f0, f90);
     return f * f * e_avg / (make_float3(1.0f, 1.0f, 1.0f) - f * (1.0f - e_avg));
 }

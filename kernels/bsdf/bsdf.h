@@ -33,7 +33,10 @@
  *    C (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)), outside only, returns it:
  *    C = metallic MS(base, 1) + (1 - metallic)(1 - transmission) MS(F0_d, F90_d),
  *    MS the multiple-scattering colour of a Schlick interface. A white metal
- *    then reflects exactly 1 at every roughness.
+ *    then reflects 1 from roughness 0.13 up; below, where the loss is under
+ *    0.1% on average but peaked at grazing angles, the lobe is left out
+ *    (WF_ALBEDO_MIN_LOSS) and a grazing view loses up to 2.4%: sampling the
+ *    lobe by the cosine would give weights in the hundreds there.
  *  - the diffuse base, outside only: (1 - metallic)(1 - transmission) base / pi
  *    (1 - L(mu_o))(1 - L(mu_i)) / (1 - L_avg), L the dielectric layer's whole
  *    albedo (single scattering with Schlick's F_d plus its multiple scattering)
@@ -59,7 +62,7 @@
  * proportion to the luminances of R(wo.z) + T(wo.z) against the albedo of the
  * diffuse and multiple-scattering lobes at wo.z, which are sampled together by
  * the hemisphere sampler; at least
- * WF_BSDF_MIN_INTERFACE_PROBABILITY while such a lobe is there, 1 where
+ * WF_BSDF_MIN_LOBE_PROBABILITY for each while both are there, 1 where
  * none is, and 0 where the interface neither reflects nor transmits (specular
  * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
  * reflects or refracts in proportion to the luminances of R and T at wo.wm.
@@ -81,7 +84,7 @@
 #include "bsdf/microfacet.h"
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
-#define WF_BSDF_MIN_INTERFACE_PROBABILITY 0.05f
+#define WF_BSDF_MIN_LOBE_PROBABILITY 0.05f
 
 WF_DEVICE_BEGIN
 
@@ -170,7 +173,7 @@ WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAlbedo* a, float 
     const float3 one = bsdf_gray(1.0f);
     const float3 layer_i = bsdf_layer_albedo(p, at_i, a->average.x);
     const float3 diffuse = bsdf_diffuse_albedo(p) * (one - a->layer_o) * (one - layer_i) /
-                           (WF_PI * max(one - a->layer_average, bsdf_gray(WF_ALBEDO_MIN_LOSS)));
+                           (WF_PI * max(one - a->layer_average, bsdf_gray(1e-6f)));
     return diffuse + a->multiple_color * multiple_scattering_lobe(a->at_o.x, at_i.x, a->average.x);
 }
 
@@ -185,7 +188,9 @@ WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo
     if (!(e_base > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
     if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
-    return max(e_interface / (e_interface + e_base), WF_BSDF_MIN_INTERFACE_PROBABILITY);
+    /* Neither lobe starves: a weight f |cos| / pdf stays within 1 / 0.05 of its lobe's. */
+    return min(max(e_interface / (e_interface + e_base), WF_BSDF_MIN_LOBE_PROBABILITY),
+               1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
 }
 
 /* The probability of reflecting rather than refracting, given R and T. */

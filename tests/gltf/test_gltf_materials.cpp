@@ -69,6 +69,37 @@ TEST_F(GltfLoaderTest, UnknownExtensionsWarnButLoad) {
     EXPECT_EQ(scene.warnings[0], "extensions not supported, ignored: KHR_materials_clearcoat");
 }
 
+// A supported extension's property the renderer does not read is named once,
+// with the number of materials that set it; a white specularColorFactor
+// changes nothing and is not mentioned. KHR_lights_punctual is supported:
+// required, it loads, and it draws no warning.
+TEST_F(GltfLoaderTest, UnreadPropertiesAndVertexColoursWarnOnce) {
+    GltfDocument doc;
+    doc.gltf["extensionsUsed"] = {"KHR_materials_specular", "KHR_materials_transmission", "KHR_lights_punctual"};
+    doc.gltf["extensionsRequired"] = {"KHR_lights_punctual"};
+    doc.gltf["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 2}}}}}}};
+    const json tinted = {{"KHR_materials_specular", {{"specularColorFactor", {1, 0.5, 1}}}},
+                         {"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 0}}}}}};
+    doc.gltf["materials"] = {{{"extensions", tinted}},
+                             {{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1, 0.5, 1}}}}}}},
+                             {{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1, 1, 1}}}}}}}};
+    const int positions = doc.add_vec3(kTriangle);
+    for (int m = 0; m < 3; ++m) {
+        json primitive = triangle_primitive(positions);
+        primitive["material"] = m;
+        if (m == 0) primitive["attributes"]["COLOR_0"] = positions;
+        doc.add_mesh_node("mesh " + std::to_string(m), primitive);
+    }
+    doc.add_root({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    const Scene scene = load_gltf(doc.write(dir_ / "unread.gltf"));
+    ASSERT_EQ(scene.punctual_lights.size(), 1u);
+    EXPECT_EQ(scene.warnings, (std::vector<std::string>{
+                                  "COLOR_0 vertex colours not supported on 1 primitive(s), ignored",
+                                  "material properties not supported, ignored: "
+                                  "KHR_materials_specular.specularColorFactor (2 material(s)), "
+                                  "KHR_materials_transmission.transmissionTexture (1 material(s))"}));
+}
+
 TEST_F(GltfLoaderTest, MetallicRoughnessTransmissionIorAndSpecularAreRead) {
     GltfDocument doc;
     doc.gltf["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_specular"};

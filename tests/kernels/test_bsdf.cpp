@@ -314,9 +314,12 @@ TEST(Bsdf, WhiteFurnace) {
         std::snprintf(line, sizeof line, "albedo %-48s %.4f ± %.4f", c.name.c_str(), a.mean, a.standard_error);
         test::report_measured(line);
         EXPECT_LE(a.mean, 1.0 + 0.005 + 3.0 * a.standard_error) << c.name;
-        // Energy compensation (bsdf/albedo.h): an opaque white material loses nothing.
+        // Energy compensation (bsdf/albedo.h): an opaque white material loses
+        // nothing; but a metal smoother than WF_ALBEDO_MIN_LOSS allows (roughness
+        // under about 0.12) keeps single scattering's loss, up to 2.4% at grazing.
+        const bool compensated = c.p.metallic == 0.0f || c.p.roughness > 0.13f || c.wo.z > 0.5f;
         if (c.p.transmission == 0.0f && c.p.base_color == vec3(1.0f))
-            EXPECT_NEAR(a.mean, 1.0, 0.005 + 3.0 * a.standard_error) << c.name;
+            EXPECT_NEAR(a.mean, 1.0, (compensated ? 0.005 : 0.03) + 3.0 * a.standard_error) << c.name;
     }
     // Lossless Dirac interfaces: all the energy, reflected plus transmitted.
     const BsdfParams glass = material(vec3(1.0f), 0.0f, 0.0f, 1.0f, 1.5f);
