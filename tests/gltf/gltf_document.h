@@ -1,7 +1,7 @@
 // gltf_document.h — what the glTF loader tests share: GltfDocument, a glTF
 // file built in code (JSON open to tests that break it, one binary buffer
 // embedded or beside the file), the checks on what loading gives, and the
-// fixture that gives each test its own scratch folder.
+// fixture that gives each test its own scratch folder; where the real assets are.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -20,9 +20,16 @@
 #include "base/errors.h"
 #include "gltf/gltf_loader.h"
 
+#ifndef WF_SOURCE_DIR
+#define WF_SOURCE_DIR "."
+#endif
+
 namespace wf {
 
 namespace fs = std::filesystem;
+
+// The real assets made by others, beside the checkout (see their INVENTORY.md).
+inline const std::string kRealScenes = WF_SOURCE_DIR "/../shared/scenes-real/";
 using nlohmann::json;
 
 constexpr int kFloat = 5126;

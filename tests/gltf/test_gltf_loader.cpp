@@ -10,14 +10,8 @@
 
 #include <sstream>
 
-#ifndef WF_SOURCE_DIR
-#define WF_SOURCE_DIR "."
-#endif
-
 namespace wf {
 namespace {
-
-const std::string kRealScenes = WF_SOURCE_DIR "/../shared/scenes-real/";
 
 // ---------------------------------------------------------------------------
 // Cameras

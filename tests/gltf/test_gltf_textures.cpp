@@ -11,14 +11,8 @@
 #include "scene/tangents.h"
 #include "support/test_support.h"
 
-#ifndef WF_SOURCE_DIR
-#define WF_SOURCE_DIR "."
-#endif
-
 namespace wf {
 namespace {
-
-const std::string kRealScenes = WF_SOURCE_DIR "/../shared/scenes-real/";
 
 // ---------------------------------------------------------------------------
 // glTF: real assets
