@@ -50,6 +50,7 @@
  *    part (1 - transmission) is still weighed with Schlick's, an approximation
  *    of well under 1% of its albedo, and the multiple scattering of a rough
  *    refracting interface is not compensated (that needs tables over ior too).
+ *
  * The smooth limit: below alpha = WF_BSDF_DELTA_ALPHA (roughness 0.0316), or
  * for a transmissive material of ior exactly 1, the interface is a Dirac
  * mirror and a Dirac refraction (Snell), chosen in proportion to R and T at
@@ -133,7 +134,7 @@ WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
     return ((1.0f - p->metallic) * (1.0f - p->transmission)) * p->base_color;
 }
 
-/* The dielectric layer's Schlick F0 and F90. */
+/* The dielectric layer's Schlick F0; its F90 is the specular factor. */
 WF_INLINE float3 bsdf_layer_f0(const BsdfParams* p) { return bsdf_gray(p->specular * fresnel_f0(p->ior)); }
 
 /* The interface's albedo tables at one material: {E, B} at mu_o and averaged. */
@@ -182,7 +183,8 @@ WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAlbedo* a) {
     return bsdf_diffuse_albedo(p) * (bsdf_gray(1.0f) - a->layer_o) + a->multiple_color * (1.0f - a->at_o.x);
 }
 
-/* The probability that sampling chooses the interface rather than the diffuse lobe. */
+/* The probability that sampling chooses the interface rather than the base
+ * (the diffuse and multiple-scattering lobes). */
 WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
     const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) : 0.0f;
     if (!(e_base > 0.0f)) return 1.0f;
