@@ -28,6 +28,15 @@ inline float3 surface_emission(__global const Material* m, const Scene* scene, c
     return vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
 }
 
+/* Whether the material at the point bends its normal by a map. */
+inline bool surface_has_normal_map(const Scene* scene, const SurfacePoint* p) {
+#if WF_HAS_NORMAL_MAPS
+    return texture_slot(scene, p->material, WF_TEXTURE_NORMAL)->texture >= 0;
+#else
+    return false;
+#endif
+}
+
 /* The shading normal n (unit, front-facing as the mesh gives it) bent by the
  * material's normal map, if any: tangent-space (2c - 1) with x and y scaled
  * by normalTexture.scale, in the frame of the interpolated tangent made
