@@ -65,27 +65,28 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
 }
 
 std::vector<std::string> unsupported_properties(const tinygltf::Material& material) {
-    // Properties of supported extensions that are read nowhere, with the
-    // default each may carry without changing the image.
+    // Properties of supported extensions that are read nowhere; a colour
+    // factor at its default, white, changes nothing and is not one of them.
     struct Property {
         const char* extension;
         const char* name;
+        bool colour_factor;
     };
-    static const Property kIgnored[] = {{"KHR_materials_specular", "specularColorFactor"},
-                                        {"KHR_materials_specular", "specularTexture"},
-                                        {"KHR_materials_specular", "specularColorTexture"},
-                                        {"KHR_materials_transmission", "transmissionTexture"}};
+    static const Property kIgnored[] = {{"KHR_materials_specular", "specularColorFactor", true},
+                                        {"KHR_materials_specular", "specularTexture", false},
+                                        {"KHR_materials_specular", "specularColorTexture", false},
+                                        {"KHR_materials_transmission", "transmissionTexture", false}};
+    const auto is_white = [](const tinygltf::Value& value) {
+        if (!value.IsArray() || value.ArrayLen() != 3) return false;
+        for (int c = 0; c < 3; ++c)
+            if (!value.Get(c).IsNumber() || value.Get(c).GetNumberAsDouble() != 1.0) return false;
+        return true;
+    };
     std::vector<std::string> found;
     for (const Property& p : kIgnored) {
         const auto extension = material.extensions.find(p.extension);
         if (extension == material.extensions.end() || !extension->second.Has(p.name)) continue;
-        const tinygltf::Value& value = extension->second.Get(p.name);
-        if (std::string(p.name) == "specularColorFactor" && value.IsArray() && value.ArrayLen() == 3) {
-            bool white = true;
-            for (size_t c = 0; c < 3; ++c)
-                white = white && value.Get(int(c)).IsNumber() && value.Get(int(c)).GetNumberAsDouble() == 1.0;
-            if (white) continue;
-        }
+        if (p.colour_factor && is_white(extension->second.Get(p.name))) continue;
         found.push_back(std::string(p.extension) + "." + p.name);
     }
     return found;

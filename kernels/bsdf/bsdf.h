@@ -137,19 +137,21 @@ WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
 /* The dielectric layer's Schlick F0; its F90 is the specular factor. */
 WF_INLINE float3 bsdf_layer_f0(const BsdfParams* p) { return bsdf_gray(p->specular * fresnel_f0(p->ior)); }
 
-/* The interface's albedo tables at one material: {E, B} at mu_o and averaged. */
+/* The interface's albedo tables at one material: {E, B} at mu_o and averaged,
+ * and what follows from them for every wi. */
 typedef struct BsdfAlbedo {
     float2 at_o;
     float2 average;
-    float3 multiple_color; /* C of the multiple-scattering lobe */
-    float3 layer_o;        /* L(mu_o), the dielectric layer's whole albedo */
-    float3 layer_average;  /* L_avg */
+    float3 layer_f0;             /* bsdf_layer_f0 */
+    float3 layer_multiple_color; /* MS(F0_d, F90_d), the dielectric layer's alone */
+    float3 multiple_color;       /* C of the multiple-scattering lobe */
+    float3 layer_o;              /* L(mu_o), the dielectric layer's whole albedo */
+    float3 layer_average;        /* L_avg */
 } BsdfAlbedo;
 
 /* L at one cosine from its {E, B}, or L_avg from the averages. */
-WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, float2 eb, float e_average) {
-    const float3 f0 = bsdf_layer_f0(p);
-    return schlick_albedo(eb, f0, p->specular) + multiple_scattering_color(f0, p->specular, e_average) * (1.0f - eb.x);
+WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, const BsdfAlbedo* a, float2 eb) {
+    return schlick_albedo(eb, a->layer_f0, p->specular) + a->layer_multiple_color * (1.0f - eb.x);
 }
 
 WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
@@ -157,14 +159,15 @@ WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
     a.at_o = ggx_albedo(fabs(mu_o), p->roughness);
     a.average = ggx_albedo_average(p->roughness);
     const float e_avg = a.average.x;
+    a.layer_f0 = bsdf_layer_f0(p);
+    a.layer_multiple_color = multiple_scattering_color(a.layer_f0, p->specular, e_avg);
     /* A Dirac interface loses nothing, and its lobes must stay Dirac alone. */
     a.multiple_color = bsdf_interface_smooth(p)
                            ? bsdf_gray(0.0f)
                            : p->metallic * multiple_scattering_color(p->base_color, 1.0f, e_avg) +
-                                 ((1.0f - p->metallic) * (1.0f - p->transmission)) *
-                                     multiple_scattering_color(bsdf_layer_f0(p), p->specular, e_avg);
-    a.layer_o = bsdf_layer_albedo(p, a.at_o, e_avg);
-    a.layer_average = bsdf_layer_albedo(p, a.average, e_avg);
+                                 ((1.0f - p->metallic) * (1.0f - p->transmission)) * a.layer_multiple_color;
+    a.layer_o = bsdf_layer_albedo(p, &a, a.at_o);
+    a.layer_average = bsdf_layer_albedo(p, &a, a.average);
     return a;
 }
 
@@ -172,7 +175,7 @@ WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
 WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAlbedo* a, float mu_i) {
     const float2 at_i = ggx_albedo(mu_i, p->roughness);
     const float3 one = bsdf_gray(1.0f);
-    const float3 layer_i = bsdf_layer_albedo(p, at_i, a->average.x);
+    const float3 layer_i = bsdf_layer_albedo(p, a, at_i);
     const float3 diffuse = bsdf_diffuse_albedo(p) * (one - a->layer_o) * (one - layer_i) /
                            (WF_PI * max(one - a->layer_average, bsdf_gray(1e-6f)));
     return diffuse + a->multiple_color * multiple_scattering_lobe(a->at_o.x, at_i.x, a->average.x);

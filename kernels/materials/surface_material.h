@@ -7,6 +7,7 @@
 
 #include "bsdf/bsdf.h"
 #include "materials/surface_texture.h"
+#include "materials/valid_reflection.h"
 
 inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
                                uint hemisphere) {
@@ -28,23 +29,21 @@ inline float3 surface_emission(__global const Material* m, const Scene* scene, c
     return vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
 }
 
-/* Whether the material at the point bends its normal by a map. */
-inline bool surface_has_normal_map(const Scene* scene, const SurfacePoint* p) {
-#if WF_HAS_NORMAL_MAPS
-    return texture_slot(scene, p->material, WF_TEXTURE_NORMAL)->texture >= 0;
-#else
-    return false;
-#endif
-}
+/* x turned to the side of ng. */
+inline float3 facing(float3 x, float3 ng) { return dot(x, ng) < 0.0f ? -x : x; }
 
-/* The shading normal n (unit, front-facing as the mesh gives it) bent by the
- * material's normal map, if any: tangent-space (2c - 1) with x and y scaled
- * by normalTexture.scale, in the frame of the interpolated tangent made
- * orthogonal to n and the bitangent cross(n, t) w. */
-inline float3 surface_normal(const Scene* scene, const SurfacePoint* p, float3 n) {
+/* The shading normal, on the side of ng (the unit geometric normal on the side
+ * the ray arrived from, v the unit way back along it): the interpolated normal
+ * n (unit, front-facing as the mesh gives it) bent by the material's normal
+ * map, if any: tangent-space (2c - 1) with x and y scaled by
+ * normalTexture.scale, in the frame of the interpolated tangent made
+ * orthogonal to n and the bitangent cross(n, t) w. A mapped normal that would
+ * mirror v into the surface is bent back (materials/valid_reflection.h);
+ * interpolated ones are left as the mesh gives them. */
+inline float3 surface_normal(const Scene* scene, const SurfacePoint* p, float3 n, float3 ng, float3 v) {
 #if WF_HAS_NORMAL_MAPS
     __global const TextureRef* ref = texture_slot(scene, p->material, WF_TEXTURE_NORMAL);
-    if (ref->texture < 0) return n;
+    if (ref->texture < 0) return facing(n, ng);
     const float4 c = surface_texture(scene, p, WF_TEXTURE_NORMAL);
     const float scale = scene->material_textures[p->material].normal_scale;
     const float3 in_tangent_space = (float3)((2.0f * c.x - 1.0f) * scale, (2.0f * c.y - 1.0f) * scale, 2.0f * c.z - 1.0f);
@@ -53,14 +52,17 @@ inline float3 surface_normal(const Scene* scene, const SurfacePoint* p, float3 n
     const float4 tangent = b0 * vload4(0, t->t0) + p->b1 * vload4(0, t->t1) + p->b2 * vload4(0, t->t2);
     const float3 along = tangent.xyz - dot(tangent.xyz, n) * n;
     const float length_along = length(along);
-    if (!(length_along > 0.0f)) return n;
-    const float3 x = along / length_along;
-    const float3 y = cross(n, x) * (tangent.w < 0.0f ? -1.0f : 1.0f);
-    const float3 bent = in_tangent_space.x * x + in_tangent_space.y * y + in_tangent_space.z * n;
-    const float length_bent = length(bent);
-    return length_bent > 0.0f && dot(bent, n) > 0.0f ? bent / length_bent : n;
+    float3 mapped = n; /* where the tangent frame or the bent normal degenerates */
+    if (length_along > 0.0f) {
+        const float3 x = along / length_along;
+        const float3 y = cross(n, x) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+        const float3 bent = in_tangent_space.x * x + in_tangent_space.y * y + in_tangent_space.z * n;
+        const float length_bent = length(bent);
+        if (length_bent > 0.0f && dot(bent, n) > 0.0f) mapped = bent / length_bent;
+    }
+    return valid_reflection_normal(ng, v, facing(mapped, ng));
 #else
-    return n;
+    return facing(n, ng);
 #endif
 }
 

@@ -21,7 +21,6 @@
 #include "common/bounce_layers.h"
 #include "common/sample_values.h"
 #include "materials/surface_material.h"
-#include "materials/valid_reflection.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 
@@ -52,13 +51,8 @@ inline SurfaceHit surface_at(__global const Triangle* t, __global const Triangle
     s.front_face = dot(ng, direction) < 0.0f;
     s.geometric_normal = s.front_face ? ng : -ng;
     const float b0 = 1.0f - hit.y - hit.z;
-    const float3 ns = surface_normal(
-        scene, point, normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2)));
-    s.shading_normal = dot(ns, s.geometric_normal) < 0.0f ? -ns : ns;
-    /* A mapped normal may mirror the view into the surface; interpolated ones
-     * are left as the mesh gives them. */
-    if (surface_has_normal_map(scene, point))
-        s.shading_normal = valid_reflection_normal(s.geometric_normal, -direction, s.shading_normal);
+    const float3 interpolated = normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2));
+    s.shading_normal = surface_normal(scene, point, interpolated, s.geometric_normal, -direction);
     return s;
 }
 

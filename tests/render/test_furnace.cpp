@@ -16,6 +16,7 @@
 #include <memory>
 
 #include <gtest/gtest.h>
+#include <glm/gtc/constants.hpp>
 
 #include "render/renderer.h"
 #include "scene/environment_map.h"
@@ -24,12 +25,11 @@
 namespace wf {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-
 void add_smooth_sphere(Scene& scene, uint32_t material, int rings = 64, int segments = 128) {
     if (scene.mesh_names.empty()) scene.mesh_names.push_back("sphere");
     auto point = [&](int i, int j) {
-        const float theta = kPi * float(i) / float(rings), phi = 2.0f * kPi * float(j) / float(segments);
+        const float theta = glm::pi<float>() * float(i) / float(rings),
+                    phi = glm::two_pi<float>() * float(j) / float(segments);
         return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
     };
     auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
