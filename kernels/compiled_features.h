@@ -13,6 +13,9 @@
 #ifndef WF_HAS_ALPHA_MASK
 #define WF_HAS_ALPHA_MASK 1
 #endif
+#ifndef WF_HAS_VERTEX_COLORS
+#define WF_HAS_VERTEX_COLORS 1
+#endif
 #ifndef WF_HAS_EMISSIVE_TRIANGLES
 #define WF_HAS_EMISSIVE_TRIANGLES 1
 #endif

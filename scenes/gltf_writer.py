@@ -159,10 +159,12 @@ def icosphere(subdivisions):
 
 
 def material(name, base_color, metallic=0.0, roughness=1.0, emission=None,
-             transmission=None, ior=None):
+             transmission=None, ior=None, thickness=None):
     """A metallic-roughness material. `emission` is the radiance (RGB, any
     scale): the factor stays in [0, 1] as glTF requires and
-    KHR_materials_emissive_strength carries the scale."""
+    KHR_materials_emissive_strength carries the scale. `thickness` (scene
+    units) makes a transmissive material a solid volume through
+    KHR_materials_volume; without it glTF's transmission is a thin wall."""
     entry = {
         "name": name,
         "pbrMetallicRoughness": {
@@ -180,6 +182,8 @@ def material(name, base_color, metallic=0.0, roughness=1.0, emission=None,
         extensions["KHR_materials_ior"] = {"ior": float(ior)}
     if transmission is not None:
         extensions["KHR_materials_transmission"] = {"transmissionFactor": float(transmission)}
+    if thickness is not None:
+        extensions["KHR_materials_volume"] = {"thicknessFactor": float(thickness)}
     if extensions:
         entry["extensions"] = extensions
     return entry

@@ -9,8 +9,9 @@ hundredth of the area -- the hard case for sampling the light by the BSDF.
 With --mirror it writes scenes/cornell-mirror.gltf: the tall block a perfect
 mirror (white base colour, metallic 1, roughness 0). With --glass it writes
 scenes/cornell-glass.gltf: the blocks removed and a glass sphere on the floor
-(transmission 1, ior 1.5, roughness 0, white; KHR_materials_transmission and
-KHR_materials_ior), an icosphere of 4 subdivisions (5120 triangles) with
+(transmission 1, ior 1.5, roughness 0, white; KHR_materials_transmission,
+KHR_materials_ior, and KHR_materials_volume with the sphere's diameter as its
+thickness, so that it is a solid ball, not glTF's thin wall), an icosphere of 4 subdivisions (5120 triangles) with
 smooth normals, radius 110 mm, its lowest vertex 0.1 mm above the floor.
 
 It owns the winding of every triangle: the listed corner order of the measured
@@ -58,11 +59,12 @@ LIGHT_ALBEDO = (0.78, 0.78, 0.78)
 
 # The variants' materials: a perfect mirror, and clear glass.
 MIRROR = material("mirror", (1.0, 1.0, 1.0), metallic=1.0, roughness=0.0)
-GLASS = material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, transmission=1.0, ior=1.5)
+GLASS_SPHERE_RADIUS = 110.0
+GLASS = material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, transmission=1.0, ior=1.5,
+                 thickness=2.0 * GLASS_SPHERE_RADIUS)
 
 # The glass sphere: centred over the floor's middle, a little toward the
 # camera; its lowest vertex 0.1 mm above the floor, so the two never touch.
-GLASS_SPHERE_RADIUS = 110.0
 GLASS_SPHERE_CENTRE_XZ = (278.0, 250.0)
 GLASS_SPHERE_GAP = 0.1
 GLASS_SPHERE_SUBDIVISIONS = 4

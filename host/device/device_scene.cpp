@@ -127,10 +127,17 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         dm.transmission = m.transmission;
         dm.ior = m.ior;
         dm.specular = m.specular;
+        store3(dm.specular_color, m.specular_color);
         store3(dm.emission, m.emission);
-        dm.flags = m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
+        dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);
     }
+    // A material reads COLOR_0 where any of its corners is not white (add_texture_data uploads them all).
+    if (!d.colors.empty())
+        for (size_t t = 0; t < scene.triangle_count(); ++t)
+            for (size_t k = 0; k < 3; ++k)
+                if (scene.colors[3 * t + k] != glm::vec4(1.0f))
+                    d.materials[scene.triangle_material[t]].flags |= WF_MATERIAL_VERTEX_COLORS;
     return d;
 }
 

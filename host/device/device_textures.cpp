@@ -1,7 +1,8 @@
 // device_textures.cpp — the texture part of the device scene
 // (add_texture_data in device_scene.h): each material's texture references
 // and parameters flattened in material order, and per-triangle texture
-// coordinates and tangents in BVH order, only for scenes with textures.
+// coordinates and tangents in BVH order, only for scenes with textures, and
+// per-triangle vertex colours, only for scenes whose colours are not all white.
 #include "device/device_scene.h"
 
 namespace wf {
@@ -30,6 +31,14 @@ void add_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_
             d.tangents.push_back(tg);
         }
     }
+    if (scene.has_vertex_colors())
+        for (const uint32_t t : triangle_order) {
+            TriangleColors c{};
+            float* corners[3] = {c.c0, c.c1, c.c2};
+            for (size_t k = 0; k < 3; ++k)
+                for (int i = 0; i < 4; ++i) corners[k][i] = scene.colors[3 * t + k][i];
+            d.colors.push_back(c);
+        }
     d.texture_infos = scene.textures.infos;
     d.texels = scene.textures.texels;
     for (const SceneMaterial& m : scene.materials) {

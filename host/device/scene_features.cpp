@@ -14,6 +14,7 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
     return {{f.textures, {"WF_HAS_TEXTURES", "textures"}},
             {f.normal_maps, {"WF_HAS_NORMAL_MAPS", "normal maps"}},
             {f.alpha_mask, {"WF_HAS_ALPHA_MASK", "alpha mask"}},
+            {f.vertex_colors, {"WF_HAS_VERTEX_COLORS", "vertex colours"}},
             {f.emissive_triangles, {"WF_HAS_EMISSIVE_TRIANGLES", "emissive triangles"}},
             {f.punctual_lights, {"WF_HAS_PUNCTUAL_LIGHTS", "punctual lights"}},
             {f.environment, {"WF_HAS_ENVIRONMENT", "environment"}}};
@@ -29,6 +30,7 @@ SceneFeatures scene_features(const Scene& scene) {
         f.normal_maps = f.normal_maps || m.textures[WF_TEXTURE_NORMAL].texture >= 0;
         f.alpha_mask = f.alpha_mask || m.alpha_mode == WF_ALPHA_MASK;
     }
+    f.vertex_colors = scene.has_vertex_colors();
     f.emissive_triangles = scene.has_emissive_triangles();
     f.punctual_lights = !scene.punctual_lights.empty();
     f.environment = scene.environment != nullptr;

@@ -17,6 +17,7 @@ struct SceneFeatures {
     bool textures = true;           // any material reads a texture
     bool normal_maps = true;        // any material has a normal map
     bool alpha_mask = true;         // any material is alpha-masked
+    bool vertex_colors = true;      // any COLOR_0 that is not white
     bool emissive_triangles = true; // any triangle emits
     bool punctual_lights = true;    // KHR_lights_punctual
     bool environment = true;        // an environment light

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <map>
 
 #include "gltf/gltf_diagnostics.h"
@@ -208,9 +209,14 @@ std::vector<glm::vec3> read_vec3_attribute(const Model& model, int index, const 
     return vectors;
 }
 
-std::vector<glm::vec2> read_texcoords(const Model& model, int index, size_t vertex_count,
-                                      const std::string& where, const std::string& role) {
-    if (index < 0) return std::vector<glm::vec2>(vertex_count, glm::vec2(0.0f));
+namespace {
+
+// An attribute of FLOAT or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT
+// components, one of `types` (TINYGLTF_TYPE_*), with one element per vertex:
+// its values scaled to floats, and its number of components.
+std::vector<double> read_normalized(const Model& model, int index, size_t vertex_count, const std::string& where,
+                                    const std::string& role, std::initializer_list<int> types, const char* allowed,
+                                    int* components) {
     const Accessor& accessor = find_accessor(model, index, where, role);
     const std::string what = accessor_name(index, role);
     const int type = accessor.componentType;
@@ -218,17 +224,50 @@ std::vector<glm::vec2> read_texcoords(const Model& model, int index, size_t vert
                          : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE  ? 1.0 / 255.0
                          : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 1.0 / 65535.0
                                                                           : 0.0;
-    if (accessor.type != TINYGLTF_TYPE_VEC2 || scale == 0.0 ||
+    if (std::find(types.begin(), types.end(), accessor.type) == types.end() || scale == 0.0 ||
         (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized))
-        fail(where, what + " must be VEC2 of FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, not " +
+        fail(where, what + " must be " + allowed + " of FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, not " +
                         describe_format(accessor));
-    const std::vector<double> values = read_accessor(model, accessor, where, what);
+    std::vector<double> values = read_accessor(model, accessor, where, what);
     if (accessor.count != vertex_count)
         fail(where, role + " has " + std::to_string(accessor.count) + " elements but POSITION has " +
                         std::to_string(vertex_count));
+    for (double& v : values) v *= scale;
+    *components = accessor.type == TINYGLTF_TYPE_VEC4 ? 4 : accessor.type == TINYGLTF_TYPE_VEC3 ? 3 : 2;
+    return values;
+}
+
+} // namespace
+
+std::vector<glm::vec2> read_texcoords(const Model& model, int index, size_t vertex_count,
+                                      const std::string& where, const std::string& role) {
+    if (index < 0) return std::vector<glm::vec2>(vertex_count, glm::vec2(0.0f));
+    int components = 0;
+    const std::vector<double> values =
+        read_normalized(model, index, vertex_count, where, role, {TINYGLTF_TYPE_VEC2}, "VEC2", &components);
     std::vector<glm::vec2> uv(vertex_count);
-    for (size_t i = 0; i < vertex_count; ++i) uv[i] = glm::vec2(values[2 * i] * scale, values[2 * i + 1] * scale);
+    for (size_t i = 0; i < vertex_count; ++i) uv[i] = glm::vec2(values[2 * i], values[2 * i + 1]);
     return uv;
+}
+
+std::vector<glm::vec4> read_colors(const Model& model, int index, size_t vertex_count, const std::string& where) {
+    if (index < 0) return std::vector<glm::vec4>(vertex_count, glm::vec4(1.0f));
+    int n = 0;
+    const std::vector<double> values = read_normalized(model, index, vertex_count, where, "COLOR_0",
+                                                       {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, "VEC3 or VEC4", &n);
+    std::vector<glm::vec4> colors(vertex_count);
+    for (size_t i = 0; i < vertex_count; ++i) {
+        glm::vec4 c(1.0f);
+        for (int k = 0; k < n; ++k) {
+            // Floats outside [0, 1] (or NaN) would make the surface emit or absorb nonsense.
+            const double v = values[n * i + k];
+            if (!(v >= 0.0 && v <= 1.0))
+                fail(where, "COLOR_0 element " + std::to_string(i) + " is not in [0, 1]");
+            c[k] = float(v);
+        }
+        colors[i] = c;
+    }
+    return colors;
 }
 
 std::vector<glm::vec4> read_tangents(const Model& model, int index, size_t vertex_count, const std::string& where) {

@@ -28,6 +28,12 @@ std::vector<glm::vec3> read_vec3_attribute(const tinygltf::Model& model, int ind
 std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int index, size_t vertex_count,
                                       const std::string& where, const std::string& role);
 
+// COLOR_0: VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE or
+// UNSIGNED_SHORT (glTF 2.0 §3.7.2.1), linear RGBA, alpha 1 for VEC3; white
+// where the primitive has none (index < 0).
+std::vector<glm::vec4> read_colors(const tinygltf::Model& model, int index, size_t vertex_count,
+                                   const std::string& where);
+
 // TANGENT: VEC4 of FLOAT, w the handedness.
 std::vector<glm::vec4> read_tangents(const tinygltf::Model& model, int index, size_t vertex_count,
                                      const std::string& where);

@@ -11,7 +11,8 @@ namespace {
 const std::set<std::string>& supported_extensions() {
     static const std::set<std::string> names = {"KHR_lights_punctual",        "KHR_materials_emissive_strength",
                                                 "KHR_materials_ior",          "KHR_materials_specular",
-                                                "KHR_materials_transmission", "KHR_texture_transform"};
+                                                "KHR_materials_transmission", "KHR_materials_volume",
+                                                "KHR_texture_transform"};
     return names;
 }
 
@@ -65,12 +66,6 @@ void check_core_features(const tinygltf::Model& model, std::vector<std::string>&
     if (morphed)
         warnings.push_back("morph targets not supported on " + std::to_string(morphed) +
                            " primitive(s), rendered without them");
-    size_t coloured = 0;
-    for (const tinygltf::Mesh& mesh : model.meshes)
-        for (const tinygltf::Primitive& primitive : mesh.primitives) coloured += primitive.attributes.count("COLOR_0");
-    if (coloured)
-        warnings.push_back("COLOR_0 vertex colours not supported on " + std::to_string(coloured) +
-                           " primitive(s), ignored");
     if (!model.animations.empty())
         warnings.push_back(std::to_string(model.animations.size()) +
                            " animation(s) not supported, rendered at rest");

@@ -175,6 +175,7 @@ private:
                 scene_.normals.push_back(unit_normal);
                 scene_.uv0.push_back(mesh.uv0[corner]);
                 scene_.uv1.push_back(mesh.uv1[corner]);
+                scene_.colors.push_back(mesh.colors[corner]);
                 // Tangents move with the surface (not the inverse transpose);
                 // a mirroring transform flips the handedness.
                 const glm::vec4 t = mesh.tangents[corner];

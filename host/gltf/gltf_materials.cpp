@@ -26,6 +26,25 @@ double extension_number(const tinygltf::Material& material, const char* extensio
     return value.IsNumber() ? value.GetNumberAsDouble() : fallback;
 }
 
+// An RGB factor of a material extension, or white where it is absent.
+// KHR_materials_specular's colour may exceed 1; it must be finite and not negative.
+glm::vec3 extension_color(const tinygltf::Material& material, const char* extension_name, const char* property,
+                          const std::string& where) {
+    const auto extension = material.extensions.find(extension_name);
+    if (extension == material.extensions.end() || !extension->second.Has(property)) return glm::vec3(1.0f);
+    const tinygltf::Value& value = extension->second.Get(property);
+    const std::string what = std::string(extension_name) + "." + property;
+    if (!value.IsArray() || value.ArrayLen() != 3) fail(where, what + " must have 3 numbers");
+    glm::vec3 color;
+    for (int c = 0; c < 3; ++c) {
+        const tinygltf::Value& number = value.Get(c);
+        const double x = number.IsNumber() ? number.GetNumberAsDouble() : -1.0;
+        if (!(x >= 0.0 && x <= 3.4e38)) fail(where, what + " must hold finite numbers >= 0");
+        color[c] = float(x);
+    }
+    return color;
+}
+
 // A factor that glTF defines on [0, 1]: NaN is an error, the rest is clamped.
 float unit_factor(double value, const std::string& where, const char* what) {
     if (std::isnan(value)) fail(where, std::string(what) + " is NaN");
@@ -48,6 +67,13 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
         "transmissionFactor");
     converted.specular = unit_factor(
         extension_number(material, "KHR_materials_specular", "specularFactor", 1.0), where, "specularFactor");
+    converted.specular_color = extension_color(material, "KHR_materials_specular", "specularColorFactor", where);
+    // Without KHR_materials_volume, or with its thickness 0, glTF's
+    // transmission is through a thin wall (KHR_materials_volume, "Thin-walled").
+    const double thickness = extension_number(material, "KHR_materials_volume", "thicknessFactor", 0.0);
+    if (!(thickness >= 0.0 && std::isfinite(thickness)))
+        fail(where, "KHR_materials_volume.thicknessFactor must be finite and >= 0");
+    converted.thin_walled = thickness == 0.0;
     // KHR_materials_ior allows 0 as "a perfect absorber"; that, and anything below 1, is not supported.
     const double ior = extension_number(material, "KHR_materials_ior", "ior", 1.5);
     if (!(ior >= 1.0 && ior < 1e3)) fail(where, "ior " + std::to_string(ior) + " is not in [1, 1000)");
@@ -72,10 +98,8 @@ std::vector<std::string> unsupported_properties(const tinygltf::Material& materi
         const char* name;
         bool colour_factor;
     };
-    static const Property kIgnored[] = {{"KHR_materials_specular", "specularColorFactor", true},
-                                        {"KHR_materials_specular", "specularTexture", false},
-                                        {"KHR_materials_specular", "specularColorTexture", false},
-                                        {"KHR_materials_transmission", "transmissionTexture", false}};
+    static const Property kIgnored[] = {{"KHR_materials_volume", "attenuationColor", true},
+                                        {"KHR_materials_volume", "attenuationDistance", false}};
     const auto is_white = [](const tinygltf::Value& value) {
         if (!value.IsArray() || value.ArrayLen() != 3) return false;
         for (int c = 0; c < 3; ++c)

@@ -84,6 +84,7 @@ void append_primitive(const Model& model, const tinygltf::Primitive& primitive, 
     const uint32_t material = material_index(primitive.material, where);
     const std::vector<glm::vec2> uv0 = read_texcoords(model, attribute("TEXCOORD_0"), positions.size(), where, "TEXCOORD_0");
     const std::vector<glm::vec2> uv1 = read_texcoords(model, attribute("TEXCOORD_1"), positions.size(), where, "TEXCOORD_1");
+    const std::vector<glm::vec4> colors = read_colors(model, attribute("COLOR_0"), positions.size(), where);
     const std::vector<uint32_t> corners = triangle_corners(primitive.mode, vertices);
     // Generated from the UV set the material's normal map reads.
     const int tangent_accessor = attribute("TANGENT");
@@ -97,6 +98,7 @@ void append_primitive(const Model& model, const tinygltf::Primitive& primitive, 
         out.uv0.push_back(uv0[corner]);
         out.uv1.push_back(uv1[corner]);
         out.tangents.push_back(tangents[corner]);
+        out.colors.push_back(colors[corner]);
     }
     out.materials.resize(out.positions.size() / 3, material);
 }

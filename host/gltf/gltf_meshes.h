@@ -52,6 +52,7 @@ struct MeshTriangles {
     std::vector<glm::vec3> normals;   // three per triangle; zero where the file has none
     std::vector<glm::vec2> uv0, uv1;  // three per triangle; zero where the file has none
     std::vector<glm::vec4> tangents;  // three per triangle; the file's, or generated (tangents.h)
+    std::vector<glm::vec4> colors;    // three per triangle; COLOR_0, white where the file has none
     std::vector<uint32_t> materials;  // one per triangle, index into Scene::materials
     uint32_t name_index = 0;          // into Scene::mesh_names
 };

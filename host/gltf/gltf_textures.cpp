@@ -138,14 +138,13 @@ int32_t GltfTextures::texture_info(int index, bool srgb, const std::string& wher
     return made;
 }
 
-TextureRef GltfTextures::reference(int index, int tex_coord, const tinygltf::ExtensionMap& extensions,
-                                   bool srgb, const std::string& where) {
+TextureRef GltfTextures::reference(int index, int tex_coord, const tinygltf::Value* transform_object, bool srgb,
+                                   const std::string& where) {
     TextureRef ref = no_texture();
     if (index < 0) return ref;
     ref.texture = texture_info(index, srgb, where);
-    const auto found = extensions.find("KHR_texture_transform");
-    if (found != extensions.end() && found->second.IsObject()) {
-        const tinygltf::Value& transform = found->second;
+    if (transform_object && transform_object->IsObject()) {
+        const tinygltf::Value& transform = *transform_object;
         float offset[2] = {0, 0}, scale[2] = {1, 1};
         read_pair(transform, "offset", offset, where);
         read_pair(transform, "scale", scale, where);
@@ -164,17 +163,41 @@ TextureRef GltfTextures::reference(int index, int tex_coord, const tinygltf::Ext
     return ref;
 }
 
+TextureRef GltfTextures::extension_reference(const tinygltf::Material& material, const char* extension,
+                                             const char* property, bool srgb, const std::string& where) {
+    const auto found = material.extensions.find(extension);
+    if (found == material.extensions.end() || !found->second.Has(property)) return no_texture();
+    const std::string info_where = where + ": " + extension + "." + property;
+    const tinygltf::Value& info = found->second.Get(property);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+        fail(info_where, "is not a textureInfo with an integer index");
+    const int tex_coord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+    const tinygltf::Value* transform = nullptr;
+    if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+        transform = &info.Get("extensions").Get("KHR_texture_transform");
+    return reference(info.Get("index").GetNumberAsInt(), tex_coord, transform, srgb, info_where);
+}
+
 void GltfTextures::convert(const tinygltf::Material& material, size_t index, SceneMaterial& out) {
     const std::string where = path_ + ": " + (material.name.empty() ? "material " + std::to_string(index)
                                                                      : "material '" + material.name + "'");
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     const auto slot = [&](uint32_t slot_index, const auto& info, bool srgb, const char* name) {
-        out.textures[slot_index] = reference(info.index, info.texCoord, info.extensions, srgb, where + ": " + name);
+        const auto transform = info.extensions.find("KHR_texture_transform");
+        out.textures[slot_index] =
+            reference(info.index, info.texCoord, transform == info.extensions.end() ? nullptr : &transform->second,
+                      srgb, where + ": " + name);
     };
     slot(WF_TEXTURE_BASE_COLOR, pbr.baseColorTexture, true, "baseColorTexture");
     slot(WF_TEXTURE_METALLIC_ROUGHNESS, pbr.metallicRoughnessTexture, false, "metallicRoughnessTexture");
     slot(WF_TEXTURE_NORMAL, material.normalTexture, false, "normalTexture");
     slot(WF_TEXTURE_EMISSIVE, material.emissiveTexture, true, "emissiveTexture");
+    const auto extension_slot = [&](uint32_t slot_index, const char* extension, const char* property, bool srgb) {
+        out.textures[slot_index] = extension_reference(material, extension, property, srgb, where);
+    };
+    extension_slot(WF_TEXTURE_SPECULAR, "KHR_materials_specular", "specularTexture", false);
+    extension_slot(WF_TEXTURE_SPECULAR_COLOR, "KHR_materials_specular", "specularColorTexture", true);
+    extension_slot(WF_TEXTURE_TRANSMISSION, "KHR_materials_transmission", "transmissionTexture", false);
 
     if (!std::isfinite(material.normalTexture.scale)) fail(where, "normalTexture.scale is not finite");
     out.normal_scale = float(material.normalTexture.scale);

@@ -4,9 +4,9 @@
 // material; fills SceneMaterial's texture fields and the Scene's TextureSet.
 //
 // Conventions:
-// - base colour and emissive images are sRGB, metallic-roughness and normal
-//   images linear (glTF 2.0 §3.9); occlusion is not read (a path tracer
-//   computes its own);
+// - base colour, emissive and specular colour images are sRGB, the others
+//   linear (glTF 2.0 §3.9 and the extensions); occlusion is not read (a path
+//   tracer computes its own);
 // - an image is decoded once however many textures use it; each (image,
 //   sampler, colour space) gets one TextureInfo;
 // - texCoord 0 and 1 are supported; a higher set warns and reads TEXCOORD_0;
@@ -53,8 +53,12 @@ public:
 
 private:
     int32_t texture_info(int index, bool srgb, const std::string& where);
-    TextureRef reference(int index, int tex_coord, const std::map<std::string, tinygltf::Value>& extensions,
-                         bool srgb, const std::string& where);
+    // `transform`: the textureInfo's KHR_texture_transform object, or null.
+    TextureRef reference(int index, int tex_coord, const tinygltf::Value* transform, bool srgb,
+                         const std::string& where);
+    // A textureInfo inside a material extension (tinygltf parses only the core ones).
+    TextureRef extension_reference(const tinygltf::Material& material, const char* extension, const char* property,
+                                   bool srgb, const std::string& where);
 
     const tinygltf::Model& model_;
     std::string path_;

@@ -21,8 +21,8 @@ namespace wf {
 
 struct EnvironmentMap; // environment_map.h
 
-// glTF 2.0 metallic-roughness with KHR_materials_transmission, _ior and
-// _specular. The defaults here are a plain Lambertian surface (specular 0),
+// glTF 2.0 metallic-roughness with KHR_materials_transmission, _volume
+// (its thickness only), _ior and _specular. The defaults here are a plain Lambertian surface (specular 0),
 // what scenes built in code mean; the glTF loader sets glTF's own defaults.
 struct SceneMaterial {
     std::string name;
@@ -32,12 +32,16 @@ struct SceneMaterial {
     float transmission = 0.0f;
     float ior = 1.5f;
     float specular = 0.0f;      // 0: no specular lobe at all
+    glm::vec3 specular_color{1.0f}; // KHR_materials_specular: tints the dielectric layer's F0
     glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
     bool double_sided = false;  // one-sided surfaces emit from the front face only
+    // Transmission through a sheet of no thickness, as glTF has it without
+    // KHR_materials_volume; scenes built in code are solid.
+    bool thin_walled = false;
 
     // Texture maps, one per WF_TEXTURE_* slot (scene_types.h), indexing
     // Scene::textures; none by default. The factors above multiply them.
-    std::array<TextureRef, WF_TEXTURE_SLOTS> textures = {no_texture(), no_texture(), no_texture(), no_texture()};
+    std::array<TextureRef, WF_TEXTURE_SLOTS> textures = no_textures();
     float normal_scale = 1.0f;          // glTF normalTexture.scale
     uint32_t alpha_mode = WF_ALPHA_OPAQUE;
     float alpha_cutoff = 0.5f;          // for WF_ALPHA_MASK
@@ -72,6 +76,9 @@ struct Scene {
     // none); empty for scenes built in code, which have no texture coordinates.
     std::vector<glm::vec2> uv0, uv1; // TEXCOORD_0 and TEXCOORD_1
     std::vector<glm::vec4> tangents; // xyz unit, orthogonal to the normal; w = ±1: bitangent = cross(n, t) w
+    // COLOR_0, linear RGBA per corner, multiplying the base colour and its
+    // alpha; white where the file has none, empty for scenes built in code.
+    std::vector<glm::vec4> colors;
     std::vector<uint32_t> triangle_material; // one per triangle, index into materials
     std::vector<uint32_t> triangle_mesh;     // one per triangle, index into mesh_names
     std::vector<SceneMaterial> materials;
@@ -92,6 +99,12 @@ struct Scene {
     bool has_punctual_light() const {
         for (const PunctualLight& light : punctual_lights)
             if (light.intensity[0] > 0.0f || light.intensity[1] > 0.0f || light.intensity[2] > 0.0f) return true;
+        return false;
+    }
+    // Whether any corner's COLOR_0 is not white: only then are colours uploaded.
+    bool has_vertex_colors() const {
+        for (const glm::vec4& c : colors)
+            if (c != glm::vec4(1.0f)) return true;
         return false;
     }
     Bounds bounds() const {

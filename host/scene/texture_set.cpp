@@ -104,6 +104,12 @@ TextureRef no_texture() {
     return ref;
 }
 
+std::array<TextureRef, WF_TEXTURE_SLOTS> no_textures() {
+    std::array<TextureRef, WF_TEXTURE_SLOTS> slots;
+    slots.fill(no_texture());
+    return slots;
+}
+
 std::array<float, 6> texture_transform(float offset_u, float offset_v, float rotation, float scale_u,
                                        float scale_v) {
     const float c = std::cos(rotation), s = std::sin(rotation);

@@ -55,6 +55,8 @@ struct TextureSet {
 
 // A TextureRef naming no texture, with the identity transform and TEXCOORD_0.
 TextureRef no_texture();
+// A material's WF_TEXTURE_SLOTS, each naming no texture.
+std::array<TextureRef, WF_TEXTURE_SLOTS> no_textures();
 
 // KHR_texture_transform's matrix translation * rotation * scale (the
 // extension's order: scale first), `rotation` in radians, counter-clockwise

@@ -8,7 +8,7 @@
 #define WF_LAYOUT_STRUCTS(X) \
     X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
     X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)  \
-    X(TriangleTexcoords) X(TriangleTangents)
+    X(TriangleTexcoords) X(TriangleTangents) X(TriangleColors)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, bounds) X(BvhNode, child)                                                           \
@@ -17,8 +17,10 @@
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
     X(TriangleTexcoords, uv0) X(TriangleTexcoords, uv1)                                           \
     X(TriangleTangents, t0) X(TriangleTangents, t1) X(TriangleTangents, t2)                       \
+    X(TriangleColors, c0) X(TriangleColors, c1) X(TriangleColors, c2)                             \
     X(Material, base_color) X(Material, flags) X(Material, emission) X(Material, metallic)       \
     X(Material, roughness) X(Material, transmission) X(Material, ior) X(Material, specular)        \
+    X(Material, specular_color)                                                                   \
     X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, index) X(LightEntry, pmf)       \
     X(LightEntry, kind)                                                                           \
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \

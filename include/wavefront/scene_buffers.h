@@ -26,6 +26,7 @@
     X(TextureRef, texture_refs, "WF_TEXTURE_SLOTS per material")                                      \
     X(MaterialTextureParams, material_textures, "normal scale and alpha mode, one per material")      \
     X(TriangleTexcoords, texcoords, "per triangle in BVH order; empty without textures")              \
-    X(TriangleTangents, tangents, "per triangle in BVH order; empty without textures")
+    X(TriangleTangents, tangents, "per triangle in BVH order; empty without textures")                \
+    X(TriangleColors, colors, "COLOR_0 per triangle in BVH order; empty where all are white")
 
 #endif /* WAVEFRONT_SCENE_BUFFERS_H */

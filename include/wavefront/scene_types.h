@@ -63,7 +63,17 @@ typedef struct TriangleTangents {
     float t2[4];
 } TriangleTangents;
 
-#define WF_MATERIAL_DOUBLE_SIDED 1u
+/* Per-corner COLOR_0 (linear RGBA), in BVH order beside the Triangle buffer;
+ * only scenes whose vertex colours are not all white upload them. */
+typedef struct TriangleColors {
+    float c0[4];
+    float c1[4];
+    float c2[4];
+} TriangleColors;
+
+#define WF_MATERIAL_DOUBLE_SIDED 1u /* emits from both faces */
+#define WF_MATERIAL_THIN_WALLED 2u  /* transmission without KHR_materials_volume: a sheet, no inside */
+#define WF_MATERIAL_VERTEX_COLORS 4u /* its triangles' COLOR_0 is in the colors buffer */
 
 /* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior and
  * _specular; kernels/bsdf/ says what each factor does to the BSDF. */
@@ -76,6 +86,8 @@ typedef struct Material {
     float transmission;  /* in [0, 1] */
     float ior;           /* index of refraction inside, >= 1 */
     float specular;      /* in [0, 1]; 0 leaves a plain Lambertian surface */
+    float specular_color[3]; /* KHR_materials_specular's specularColorFactor, in [0, inf) */
+    uint32_t pad;
 } Material;
 
 /* A texture as the kernels sample it (kernels/materials/texture.h). Texels
@@ -117,7 +129,10 @@ typedef struct TextureRef {
 #define WF_TEXTURE_METALLIC_ROUGHNESS 1u /* linear; B times metallic, G times roughness */
 #define WF_TEXTURE_NORMAL 2u             /* linear; tangent-space normal, 2 c - 1 */
 #define WF_TEXTURE_EMISSIVE 3u           /* sRGB; RGB times emission */
-#define WF_TEXTURE_SLOTS 4u
+#define WF_TEXTURE_SPECULAR 4u           /* linear; A times specular (KHR_materials_specular) */
+#define WF_TEXTURE_SPECULAR_COLOR 5u     /* sRGB; RGB times specular_color */
+#define WF_TEXTURE_TRANSMISSION 6u       /* linear; R times transmission (KHR_materials_transmission) */
+#define WF_TEXTURE_SLOTS 7u
 
 #define WF_ALPHA_OPAQUE 0u /* alpha ignored */
 #define WF_ALPHA_MASK 1u   /* surface absent where alpha < alpha_cutoff */

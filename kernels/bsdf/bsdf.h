@@ -4,21 +4,24 @@
  *
  * Frame and directions: everything is in the local shading frame, z = the
  * shading normal. wo (towards the previous vertex, the camera side) and wi
- * (towards the light) are unit and point away from the surface. An opaque
- * material (transmission = 0) needs wo.z > 0 (the caller flips the frame) and
- * is black otherwise; a transmissive one takes wo on either side, wo.z < 0
- * meaning the ray arrived from inside.
+ * (towards the light) are unit and point away from the surface. An opaque or
+ * thin-walled material needs wo.z > 0 (the caller flips the frame) and is
+ * black otherwise; a solid transmissive one (bsdf_has_inside) takes wo on
+ * either side, wo.z < 0 meaning the ray arrived from inside.
  *
  * The material, glTF's mix(dielectric, metal, metallic) (spec Appendix B),
- * with KHR_materials_specular's factor scaling the dielectric layer's F_d:
+ * with KHR_materials_specular's factor and colour shaping the dielectric
+ * layer's F_d (F0 = min(F0(ior) specular_color, 1) specular, F90 = specular):
  *  - the interface: GGX microfacets (bsdf/microfacet.h), alpha = roughness^2,
  *    which reflect with R(c) = (1 - metallic) F_d(c) + metallic Schlick(base, c)
  *    and, where transmission > 0, transmit with
  *    T(c) = (1 - metallic) transmission base (1 - F_d(c)), c = wo.wm.
- *    F_d is the dielectric layer's Fresnel: Schlick with F0 = ((ior-1)/(ior+1))^2
- *    (0.04 at the default ior 1.5) for an opaque material, as glTF's model has
- *    it, and the exact dielectric reflectance (bsdf/fresnel.h) for a
- *    transmissive one, which needs the inside and total internal reflection.
+ *    F_d is the dielectric layer's Fresnel: Schlick with F0(ior) =
+ *    ((ior-1)/(ior+1))^2 (0.04 at the default ior 1.5) for an opaque or
+ *    thin-walled material, as glTF's model has it, and for a solid transmissive
+ *    one the exact dielectric reflectance (bsdf/fresnel.h), which has the
+ *    inside and total internal reflection, carried from F0(ior)..1 onto the
+ *    coloured F0..F90.
  *    Reflection is Cook-Torrance, R D G2 / (4 |wo.z| |wi.z|); transmission is
  *    Walter et al. 2007, T D G2 |wi.wm| |wo.wm| / ((wi.wm + wo.wm/eta')^2
  *    |wi.z| |wo.z|) / eta'^2, eta' = ior entering (wo.z > 0) and 1/ior leaving.
@@ -27,6 +30,12 @@
  *    Radiance). With it the BTDF obeys f(wo,wi)/n_o^2 = f(wi,wo)/n_i^2, n_o and
  *    n_i the indices on the sides of wo and wi (Veach's thesis, 5.14); the white furnace of a clear
  *    dielectric returns 1 only once the eta'^2 is multiplied back.
+ *  - a thin wall (glTF's transmission without KHR_materials_volume: a window
+ *    pane, a leaf) has no inside: its transmission is the reflection lobe
+ *    mirrored through the surface, T D G2 / (4 |wo.z| |wi.z|) at the half
+ *    vector of wo and the mirror image of wi, with no bending and no eta'^2,
+ *    so a smooth pane lets 1 - F through straight. It is seen the same from
+ *    both sides, and reciprocal under the mirror.
  *  - energy compensation (bsdf/albedo.h): a GGX interface of one scattering
  *    event reflects only E(mu) of a white light, losing up to 60% at
  *    roughness 1. A lobe of multiple scattering (Kulla and Conty 2017),
@@ -96,6 +105,8 @@ typedef struct BsdfParams {
     float transmission; /* KHR_materials_transmission */
     float ior;          /* KHR_materials_ior, 1.5 by default */
     float specular;     /* KHR_materials_specular's factor: scales F_d; 0 leaves a plain Lambertian base */
+    float3 specular_color; /* KHR_materials_specular's colour: tints F_d's F0 */
+    uint32_t thin_walled; /* transmission through a thin sheet: no bending, both sides alike */
     uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
 } BsdfParams;
 
@@ -114,28 +125,40 @@ WF_INLINE int bsdf_interface_smooth(const BsdfParams* p) {
     return p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA || (p->transmission > 0.0f && p->ior == 1.0f);
 }
 
-/* F_d, the dielectric layer's reflectance; cos_i < 0 from inside. */
-WF_INLINE float bsdf_layer_fresnel(const BsdfParams* p, float cos_i) {
-    return p->specular * (p->transmission > 0.0f ? fresnel_dielectric(cos_i, p->ior)
-                                                 : fresnel_schlick_scalar(fresnel_f0(p->ior), cos_i));
+/* A solid transmissive material: wo may arrive from inside (wo.z < 0), and
+ * refraction bends. Opaque and thin-walled materials are seen from outside. */
+WF_INLINE int bsdf_has_inside(const BsdfParams* p) { return p->transmission > 0.0f && !p->thin_walled; }
+
+/* The dielectric layer's Schlick F0, min(F0(ior) specular_color, 1) specular;
+ * its F90 is the specular factor (KHR_materials_specular). */
+WF_INLINE float3 bsdf_layer_f0(const BsdfParams* p) {
+    return p->specular * min(fresnel_f0(p->ior) * p->specular_color, bsdf_gray(1.0f));
+}
+
+/* F_d, the dielectric layer's reflectance; cos_i < 0 from inside. A solid
+ * transmissive layer follows the exact Fresnel term from its F0 to 1 (its
+ * total internal reflection included), remapped to the coloured F0. */
+WF_INLINE float3 bsdf_layer_fresnel(const BsdfParams* p, float cos_i) {
+    const float3 f0 = bsdf_layer_f0(p);
+    if (!bsdf_has_inside(p)) return f0 + (bsdf_gray(p->specular) - f0) * schlick_weight(cos_i);
+    const float f0_ior = fresnel_f0(p->ior);
+    const float toward_one = (fresnel_dielectric(cos_i, p->ior) - f0_ior) / (1.0f - f0_ior);
+    return f0 + (bsdf_gray(p->specular) - f0) * toward_one;
 }
 
 WF_INLINE float3 bsdf_reflectance(const BsdfParams* p, float cos_i) {
-    return (1.0f - p->metallic) * bsdf_gray(bsdf_layer_fresnel(p, cos_i)) +
-           p->metallic * fresnel_schlick(p->base_color, cos_i);
+    return (1.0f - p->metallic) * bsdf_layer_fresnel(p, cos_i) + p->metallic * fresnel_schlick(p->base_color, cos_i);
 }
 
 WF_INLINE float3 bsdf_transmittance(const BsdfParams* p, float cos_i) {
     if (!(p->transmission > 0.0f)) return bsdf_gray(0.0f);
-    return ((1.0f - p->metallic) * p->transmission * (1.0f - bsdf_layer_fresnel(p, cos_i))) * p->base_color;
+    return ((1.0f - p->metallic) * p->transmission) * (bsdf_gray(1.0f) - bsdf_layer_fresnel(p, cos_i)) *
+           p->base_color;
 }
 
 WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
     return ((1.0f - p->metallic) * (1.0f - p->transmission)) * p->base_color;
 }
-
-/* The dielectric layer's Schlick F0; its F90 is the specular factor. */
-WF_INLINE float3 bsdf_layer_f0(const BsdfParams* p) { return bsdf_gray(p->specular * fresnel_f0(p->ior)); }
 
 /* The interface's albedo tables at one material: {E, B} at mu_o and averaged,
  * and what follows from them for every wi. */
@@ -224,11 +247,14 @@ WF_INLINE int bsdf_refract(float3 wo, float3 n, float eta, float3* wt) {
  * the interface was chosen. */
 WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
-    const float cos_o = wo.z, cos_i = wi.z;
-    if (cos_o == 0.0f || cos_i == 0.0f) return bsdf_gray(0.0f);
-    const int reflect = cos_o * cos_i > 0.0f;
+    if (wo.z == 0.0f || wi.z == 0.0f) return bsdf_gray(0.0f);
+    const int reflect = wo.z * wi.z > 0.0f;
     if (!reflect && !(p->transmission > 0.0f)) return bsdf_gray(0.0f);
-    const float etap = reflect ? 1.0f : (cos_o > 0.0f ? p->ior : 1.0f / p->ior);
+    /* A thin wall transmits into the mirror image of its reflection lobe. */
+    const int thin_transmission = !reflect && p->thin_walled;
+    if (thin_transmission) wi.z = -wi.z;
+    const float cos_o = wo.z, cos_i = wi.z;
+    const float etap = reflect || thin_transmission ? 1.0f : (cos_o > 0.0f ? p->ior : 1.0f / p->ior);
     float3 wm = wi * etap + wo;
     const float len2 = dot(wm, wm);
     if (!(len2 > 0.0f)) return bsdf_gray(0.0f);
@@ -244,9 +270,9 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
     const float d = ggx_d(wm, alpha);
     const float g = ggx_g2(wo, wi, alpha);
     const float pdf_wm = ggx_pdf_visible(wo, wm, alpha);
-    if (reflect) {
-        *pdf = p_reflect * pdf_wm / (4.0f * fabs(dot_o));
-        return r * (d * g / (4.0f * fabs(cos_o) * fabs(cos_i)));
+    if (reflect || thin_transmission) {
+        *pdf = (reflect ? p_reflect : 1.0f - p_reflect) * pdf_wm / (4.0f * fabs(dot_o));
+        return (reflect ? r : t) * (d * g / (4.0f * fabs(cos_o) * fabs(cos_i)));
     }
     const float denom = dot_i + dot_o / etap;
     const float denom2 = denom * denom;
@@ -264,7 +290,7 @@ WF_INLINE float bsdf_diffuse_pdf(const BsdfParams* p, float3 wi) {
 WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     float3 f = bsdf_gray(0.0f);
-    if (!(p->transmission > 0.0f) && !(wo.z > 0.0f)) return f;
+    if (!bsdf_has_inside(p) && !(wo.z > 0.0f)) return f;
     const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
     const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (!bsdf_interface_smooth(p)) {
@@ -301,7 +327,7 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
     s.f = bsdf_gray(0.0f);
     s.pdf = 0.0f;
     s.delta = 0;
-    if (wo.z == 0.0f || (!(p->transmission > 0.0f) && !(wo.z > 0.0f))) return s;
+    if (wo.z == 0.0f || (!bsdf_has_inside(p) && !(wo.z > 0.0f))) return s;
     const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
     const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (u.x < p_interface) {
@@ -315,6 +341,10 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
                 s.wi = make_float3(-wo.x, -wo.y, wo.z);
                 s.f = r / fabs(wo.z);
                 s.pdf = p_interface * p_reflect;
+            } else if (p->thin_walled) {
+                s.wi = -wo;
+                s.f = t / fabs(wo.z);
+                s.pdf = p_interface * (1.0f - p_reflect);
             } else {
                 float3 wi;
                 if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
@@ -331,9 +361,10 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
         const float dot_o = dot(wo, wm);
         const float p_reflect = bsdf_reflect_probability(bsdf_reflectance(p, dot_o), bsdf_transmittance(p, dot_o));
         float3 wi;
-        if (u_choice < p_reflect) {
+        if (u_choice < p_reflect || p->thin_walled) {
             wi = 2.0f * dot_o * wm - wo;
             if (!(wi.z * wo.z > 0.0f)) return s;
+            if (!(u_choice < p_reflect)) wi.z = -wi.z; /* through the thin wall */
         } else {
             if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
         }

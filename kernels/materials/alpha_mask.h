@@ -1,6 +1,6 @@
 /* alpha_mask.h — glTF's alpha MASK mode as the BVH traversal applies it
  * (geometry/bvh_traverse.h): a hit on a masked material counts only where the
- * base colour's alpha (factor times texture) reaches the cutoff, for closest
+ * base colour's alpha (factor times texture times COLOR_0) reaches the cutoff, for closest
  * hits and shadow rays alike, so a cut-out leaf neither shows nor casts a
  * shadow where it is transparent. Device only: the host's traversal (for the
  * tests) has no textures and passes every hit. */
@@ -8,6 +8,7 @@
 #define WF_ALPHA_MASK_H
 
 #include "materials/surface_texture.h"
+#include "materials/vertex_color.h"
 
 /* The scene, whose textures say where a masked material is opaque. */
 typedef Scene HitFilter;
@@ -23,7 +24,9 @@ inline int hit_passes_filter(const HitFilter* scene, __global const Triangle* tr
     point.material = material;
     point.b1 = b1;
     point.b2 = b2;
-    return p.base_alpha * surface_texture(scene, &point, WF_TEXTURE_BASE_COLOR).w >= p.alpha_cutoff;
+    return p.base_alpha * surface_texture(scene, &point, WF_TEXTURE_BASE_COLOR).w *
+               surface_vertex_color(scene, &point).w >=
+           p.alpha_cutoff;
 #else
     return 1;
 #endif

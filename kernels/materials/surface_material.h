@@ -8,18 +8,21 @@
 #include "bsdf/bsdf.h"
 #include "materials/surface_texture.h"
 #include "materials/valid_reflection.h"
+#include "materials/vertex_color.h"
 
 inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
                                uint hemisphere) {
     const float4 base = surface_texture(scene, p, WF_TEXTURE_BASE_COLOR);
     const float4 metallic_roughness = surface_texture(scene, p, WF_TEXTURE_METALLIC_ROUGHNESS);
     BsdfParams b;
-    b.base_color = vload3(0, m->base_color) * base.xyz;
+    b.base_color = vload3(0, m->base_color) * base.xyz * surface_vertex_color(scene, p).xyz;
     b.metallic = m->metallic * metallic_roughness.z;
     b.roughness = m->roughness * metallic_roughness.y;
-    b.transmission = m->transmission;
+    b.transmission = m->transmission * surface_texture(scene, p, WF_TEXTURE_TRANSMISSION).x;
     b.ior = m->ior;
-    b.specular = m->specular;
+    b.specular = m->specular * surface_texture(scene, p, WF_TEXTURE_SPECULAR).w;
+    b.specular_color = vload3(0, m->specular_color) * surface_texture(scene, p, WF_TEXTURE_SPECULAR_COLOR).xyz;
+    b.thin_walled = (m->flags & WF_MATERIAL_THIN_WALLED) != 0u;
     b.hemisphere = hemisphere;
     return b;
 }

@@ -134,10 +134,10 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
     if (depth >= params->max_depth) return WF_SHADE_FINISHED;
 
     const BsdfParams bsdf = surface_bsdf(m, scene, &point, params->hemisphere);
-    /* An opaque surface is shaded on the side the ray arrived from; a
-     * transmissive one keeps its front (counter-clockwise) side as +z, so
-     * that wo.z < 0 says the ray arrived from inside. */
-    const bool flip = bsdf.transmission > 0.0f && !s.front_face;
+    /* An opaque or thin-walled surface is shaded on the side the ray arrived
+     * from; a solid transmissive one keeps its front (counter-clockwise) side
+     * as +z, so that wo.z < 0 says the ray arrived from inside. */
+    const bool flip = bsdf_has_inside(&bsdf) && !s.front_face;
     ShadingFrame frame;
     frame.z = flip ? -s.shading_normal : s.shading_normal;
     const float3 geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;

@@ -78,6 +78,15 @@ public:
         return add_accessor(xyz, "VEC3", xyz.size() / 3);
     }
 
+    int add_vec4(const std::vector<float>& xyzw) { return add_accessor(xyzw, "VEC4", xyzw.size() / 4); }
+
+    // VEC3 of normalized unsigned bytes (0..255 read as 0..1), as COLOR_0 may be.
+    int add_normalized_vec3(const std::vector<uint8_t>& xyz) {
+        const int accessor = add_accessor(xyz, "VEC3", xyz.size() / 3);
+        gltf["accessors"][size_t(accessor)]["normalized"] = true;
+        return accessor;
+    }
+
     template <typename T>
     int add_indices(const std::vector<T>& indices) {
         return add_accessor(indices, "SCALAR", indices.size());

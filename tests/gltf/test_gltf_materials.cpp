@@ -70,34 +70,83 @@ TEST_F(GltfLoaderTest, UnknownExtensionsWarnButLoad) {
 }
 
 // A supported extension's property the renderer does not read is named once,
-// with the number of materials that set it; a white specularColorFactor
-// changes nothing and is not mentioned. KHR_lights_punctual is supported:
-// required, it loads, and it draws no warning.
-TEST_F(GltfLoaderTest, UnreadPropertiesAndVertexColoursWarnOnce) {
+// with the number of materials that set it; a white attenuationColor changes
+// nothing and is not mentioned. KHR_lights_punctual is supported: required,
+// it loads, and it draws no warning.
+TEST_F(GltfLoaderTest, UnreadPropertiesWarnOnce) {
     GltfDocument doc;
-    doc.gltf["extensionsUsed"] = {"KHR_materials_specular", "KHR_materials_transmission", "KHR_lights_punctual"};
+    doc.gltf["extensionsUsed"] = {"KHR_materials_volume", "KHR_materials_transmission", "KHR_lights_punctual"};
     doc.gltf["extensionsRequired"] = {"KHR_lights_punctual"};
     doc.gltf["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 2}}}}}}};
-    const json tinted = {{"KHR_materials_specular", {{"specularColorFactor", {1, 0.5, 1}}}},
-                         {"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 0}}}}}};
+    const json tinted = {{"KHR_materials_volume", {{"thicknessFactor", 1}, {"attenuationColor", {1, 0.5, 1}},
+                                                   {"attenuationDistance", 2}}},
+                         {"KHR_materials_transmission", {{"transmissionFactor", 1}}}};
     doc.gltf["materials"] = {{{"extensions", tinted}},
-                             {{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1, 0.5, 1}}}}}}},
-                             {{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1, 1, 1}}}}}}}};
+                             {{"extensions", {{"KHR_materials_volume", {{"attenuationColor", {1, 0.5, 1}}}}}}},
+                             {{"extensions", {{"KHR_materials_volume", {{"attenuationColor", {1, 1, 1}}}}}}}};
     const int positions = doc.add_vec3(kTriangle);
     for (int m = 0; m < 3; ++m) {
         json primitive = triangle_primitive(positions);
         primitive["material"] = m;
-        if (m == 0) primitive["attributes"]["COLOR_0"] = positions;
         doc.add_mesh_node("mesh " + std::to_string(m), primitive);
     }
     doc.add_root({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
     const Scene scene = load_gltf(doc.write(dir_ / "unread.gltf"));
     ASSERT_EQ(scene.punctual_lights.size(), 1u);
     EXPECT_EQ(scene.warnings, (std::vector<std::string>{
-                                  "COLOR_0 vertex colours not supported on 1 primitive(s), ignored",
                                   "material properties not supported, ignored: "
-                                  "KHR_materials_specular.specularColorFactor (2 material(s)), "
-                                  "KHR_materials_transmission.transmissionTexture (1 material(s))"}));
+                                  "KHR_materials_volume.attenuationColor (2 material(s)), "
+                                  "KHR_materials_volume.attenuationDistance (1 material(s))"}));
+}
+
+// specularColorFactor, KHR_materials_volume's thickness (thin wall or solid)
+// and COLOR_0 in floats and in normalized bytes are read, with no warning.
+TEST_F(GltfLoaderTest, SpecularColourThinWallsAndVertexColoursAreRead) {
+    GltfDocument doc;
+    doc.gltf["extensionsUsed"] = {"KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_volume"};
+    const json transmits = {{"transmissionFactor", 1}};
+    doc.gltf["materials"] = {
+        {{"extensions",
+          {{"KHR_materials_specular", {{"specularColorFactor", {2, 0.5, 1}}}}, {"KHR_materials_transmission", transmits}}}},
+        {{"extensions",
+          {{"KHR_materials_transmission", transmits}, {"KHR_materials_volume", {{"thicknessFactor", 0.5}}}}}},
+        {{"extensions",
+          {{"KHR_materials_transmission", transmits}, {"KHR_materials_volume", {{"thicknessFactor", 0}}}}}}};
+    const int positions = doc.add_vec3(kTriangle);
+    const int float_colors = doc.add_vec4({1, 0, 0, 1, 0, 1, 0, 0.5f, 0, 0, 1, 0});
+    const int byte_colors = doc.add_normalized_vec3({255, 0, 0, 0, 255, 0, 0, 0, 51});
+    for (int m = 0; m < 3; ++m) {
+        json primitive = triangle_primitive(positions);
+        primitive["material"] = m;
+        if (m < 2) primitive["attributes"]["COLOR_0"] = m == 0 ? float_colors : byte_colors;
+        doc.add_mesh_node("mesh " + std::to_string(m), primitive);
+    }
+    const Scene scene = load_gltf(doc.write(dir_ / "read.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    ASSERT_EQ(scene.materials.size(), 3u);
+    expect_near(scene.materials[0].specular_color, {2.0f, 0.5f, 1.0f});
+    EXPECT_TRUE(scene.materials[0].thin_walled);  // no KHR_materials_volume
+    EXPECT_FALSE(scene.materials[1].thin_walled); // a thickness: a solid
+    EXPECT_TRUE(scene.materials[2].thin_walled);  // thickness 0
+    ASSERT_EQ(scene.colors.size(), 9u);
+    EXPECT_EQ(scene.colors[1], glm::vec4(0, 1, 0, 0.5f));
+    EXPECT_EQ(scene.colors[5], glm::vec4(0, 0, 0.2f, 1)); // 51 / 255, alpha 1 for VEC3
+    EXPECT_EQ(scene.colors[8], glm::vec4(1.0f));          // no COLOR_0: white
+    EXPECT_TRUE(scene.has_vertex_colors());
+}
+
+TEST_F(GltfLoaderTest, VertexColoursOutsideZeroOneAreNamed) {
+    GltfDocument doc;
+    const int positions = doc.add_vec3(kTriangle);
+    json primitive = triangle_primitive(positions);
+    primitive["attributes"]["COLOR_0"] = doc.add_vec4({1, 0, 0, 1, 0, 2, 0, 1, 0, 0, 1, 1});
+    doc.add_mesh_node("painted", primitive);
+    try {
+        load_gltf(doc.write(dir_ / "bright.gltf"));
+        FAIL() << "a colour of 2 loaded";
+    } catch (const InputError& e) {
+        expect_mentions(e.what(), {"bright.gltf", "mesh 'painted'", "COLOR_0 element 1 is not in [0, 1]"});
+    }
 }
 
 TEST_F(GltfLoaderTest, MetallicRoughnessTransmissionIorAndSpecularAreRead) {

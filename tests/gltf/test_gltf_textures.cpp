@@ -209,6 +209,36 @@ TEST_F(TextureGltfFiles, DataUriGreyImageAndTransformAndBlend) {
     EXPECT_EQ(scene.warnings[0], "alpha mode BLEND on 1 material(s) is rendered as MASK with cutoff 0.5");
 }
 
+// Textures inside material extensions (tinygltf leaves them as JSON):
+// specular and transmission linear, specular colour sRGB, each with its own
+// texCoord and KHR_texture_transform; a malformed one is named.
+TEST_F(TextureGltfFiles, ExtensionTexturesFillTheirSlots) {
+    write_png("rgba.png", 1, 1, 4, {10, 20, 30, 40});
+    const json transform = {{"KHR_texture_transform", {{"offset", {0.5, 0}}}}};
+    const json material = {
+        {"extensions",
+         {{"KHR_materials_specular",
+           {{"specularTexture", {{"index", 0}, {"texCoord", 1}}},
+            {"specularColorTexture", {{"index", 0}, {"extensions", transform}}}}},
+          {"KHR_materials_transmission", {{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 0}}}}}}}};
+    const json extra = {{"extensionsUsed", {"KHR_materials_specular", "KHR_materials_transmission",
+                                             "KHR_texture_transform"}}};
+    const Scene scene = load_gltf(write_gltf(material, {{{"uri", "rgba.png"}}}, {{{"source", 0}}}, extra));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    const SceneMaterial& m = scene.materials[0];
+    const auto flags = [&](uint32_t slot) { return scene.textures.infos[size_t(m.textures[slot].texture)].flags; };
+    EXPECT_EQ(flags(WF_TEXTURE_SPECULAR), 0u);
+    EXPECT_EQ(flags(WF_TEXTURE_SPECULAR_COLOR), WF_TEXTURE_SRGB);
+    EXPECT_EQ(flags(WF_TEXTURE_TRANSMISSION), 0u);
+    EXPECT_EQ(m.textures[WF_TEXTURE_SPECULAR].texcoord, 1u);
+    EXPECT_FLOAT_EQ(m.textures[WF_TEXTURE_SPECULAR_COLOR].transform[2], 0.5f);
+    EXPECT_LT(m.textures[WF_TEXTURE_BASE_COLOR].texture, 0);
+
+    const json broken = {{"extensions", {{"KHR_materials_specular", {{"specularTexture", {{"texCoord", 0}}}}}}}};
+    expect_mentions(load_error(write_gltf(broken, {{{"uri", "rgba.png"}}}, {{{"source", 0}}})),
+                    {"textured.gltf", "KHR_materials_specular.specularTexture", "integer index"});
+}
+
 // ---------------------------------------------------------------------------
 // Tangents (host/scene/tangents.h, and the loader's use of them)
 
