@@ -128,6 +128,8 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         dm.ior = m.ior;
         dm.specular = m.specular;
         store3(dm.specular_color, m.specular_color);
+        dm.clearcoat = m.clearcoat;
+        dm.clearcoat_roughness = m.clearcoat_roughness;
         store3(dm.emission, m.emission);
         dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);

@@ -74,6 +74,11 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
     if (!(thickness >= 0.0 && std::isfinite(thickness)))
         fail(where, "KHR_materials_volume.thicknessFactor must be finite and >= 0");
     converted.thin_walled = thickness == 0.0;
+    converted.clearcoat = unit_factor(extension_number(material, "KHR_materials_clearcoat", "clearcoatFactor", 0.0),
+                                      where, "clearcoatFactor");
+    converted.clearcoat_roughness =
+        unit_factor(extension_number(material, "KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0), where,
+                    "clearcoatRoughnessFactor");
     // KHR_materials_ior allows 0 as "a perfect absorber"; that, and anything below 1, is not supported.
     const double ior = extension_number(material, "KHR_materials_ior", "ior", 1.5);
     if (!(ior >= 1.0 && ior < 1e3)) fail(where, "ior " + std::to_string(ior) + " is not in [1, 1000)");
@@ -99,7 +104,8 @@ std::vector<std::string> unsupported_properties(const tinygltf::Material& materi
         bool colour_factor;
     };
     static const Property kIgnored[] = {{"KHR_materials_volume", "attenuationColor", true},
-                                        {"KHR_materials_volume", "attenuationDistance", false}};
+                                        {"KHR_materials_volume", "attenuationDistance", false},
+                                        {"KHR_materials_clearcoat", "clearcoatNormalTexture", false}};
     const auto is_white = [](const tinygltf::Value& value) {
         if (!value.IsArray() || value.ArrayLen() != 3) return false;
         for (int c = 0; c < 3; ++c)

@@ -75,8 +75,8 @@ typedef struct TriangleColors {
 #define WF_MATERIAL_THIN_WALLED 2u  /* transmission without KHR_materials_volume: a sheet, no inside */
 #define WF_MATERIAL_VERTEX_COLORS 4u /* its triangles' COLOR_0 is in the colors buffer */
 
-/* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior and
- * _specular; kernels/bsdf/ says what each factor does to the BSDF. */
+/* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior,
+ * _specular and _clearcoat; kernels/bsdf/ says what each factor does to the BSDF. */
 typedef struct Material {
     float base_color[3]; /* linear, in [0, 1] */
     uint32_t flags;      /* WF_MATERIAL_* */
@@ -87,7 +87,9 @@ typedef struct Material {
     float ior;           /* index of refraction inside, >= 1 */
     float specular;      /* in [0, 1]; 0 leaves a plain Lambertian surface */
     float specular_color[3]; /* KHR_materials_specular's specularColorFactor, in [0, inf) */
-    uint32_t pad;
+    float clearcoat;           /* KHR_materials_clearcoat's factor, in [0, 1]; 0: no coat */
+    float clearcoat_roughness; /* in [0, 1] */
+    uint32_t pad[3];
 } Material;
 
 /* A texture as the kernels sample it (kernels/materials/texture.h). Texels
@@ -132,7 +134,9 @@ typedef struct TextureRef {
 #define WF_TEXTURE_SPECULAR 4u           /* linear; A times specular (KHR_materials_specular) */
 #define WF_TEXTURE_SPECULAR_COLOR 5u     /* sRGB; RGB times specular_color */
 #define WF_TEXTURE_TRANSMISSION 6u       /* linear; R times transmission (KHR_materials_transmission) */
-#define WF_TEXTURE_SLOTS 7u
+#define WF_TEXTURE_CLEARCOAT 7u          /* linear; R times clearcoat (KHR_materials_clearcoat) */
+#define WF_TEXTURE_CLEARCOAT_ROUGHNESS 8u /* linear; G times clearcoat_roughness */
+#define WF_TEXTURE_SLOTS 9u
 
 #define WF_ALPHA_OPAQUE 0u /* alpha ignored */
 #define WF_ALPHA_MASK 1u   /* surface absent where alpha < alpha_cutoff */

@@ -60,6 +60,14 @@
  *    of well under 1% of its albedo, and the multiple scattering of a rough
  *    refracting interface is not compensated (that needs tables over ior too).
  *
+ *  - the clear coat (KHR_materials_clearcoat), over all the above: a GGX
+ *    dielectric interface of ior 1.5 (Schlick, F0 0.04, F90 1) of its own
+ *    roughness, weighted by `clearcoat`, with its multiple-scattering lobe,
+ *    and what lies below it weighed by 1 - clearcoat C(mu_o), C the coat's
+ *    whole directional albedo: a white material under any coat reflects 1.
+ *    That weight depends on wo alone (the albedo scaling of OpenPBR and of
+ *    Cycles' Principled BSDF), so a coated material is not reciprocal.
+ *
  * The smooth limit: below alpha = WF_BSDF_DELTA_ALPHA (roughness 0.0316), or
  * for a transmissive material of ior exactly 1, the interface is a Dirac
  * mirror and a Dirac refraction (Snell), chosen in proportion to R and T at
@@ -68,7 +76,10 @@
  * chosen that lobe, so that f |wi.z| / pdf is the path weight: never evaluate
  * or MIS-weigh them. bsdf_is_delta: every lobe is Dirac (NEE is useless).
  *
- * Sampling, one sample of a mixture: the interface with probability p_int, in
+ * Sampling, one sample of a mixture: first the clear coat's GGX lobe (a
+ * mirror when smooth) with probability p_coat, in proportion to its albedo
+ * at wo against that of everything below; else, below the coat,
+ * the interface with probability p_int, in
  * proportion to the luminances of R(wo.z) + T(wo.z) against the albedo of the
  * diffuse and multiple-scattering lobes at wo.z, which are sampled together by
  * the hemisphere sampler; at least
@@ -94,6 +105,7 @@
 #include "bsdf/microfacet.h"
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
+#define WF_BSDF_COAT_F0 0.04f /* KHR_materials_clearcoat: a dielectric of ior 1.5 */
 #define WF_BSDF_MIN_LOBE_PROBABILITY 0.05f
 
 WF_DEVICE_BEGIN
@@ -107,6 +119,8 @@ typedef struct BsdfParams {
     float specular;     /* KHR_materials_specular's factor: scales F_d; 0 leaves a plain Lambertian base */
     float3 specular_color; /* KHR_materials_specular's colour: tints F_d's F0 */
     uint32_t thin_walled; /* transmission through a thin sheet: no bending, both sides alike */
+    float clearcoat;           /* KHR_materials_clearcoat: the coat's weight, 0 for none */
+    float clearcoat_roughness; /* perceptual, alpha = roughness^2 */
     uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
 } BsdfParams;
 
@@ -170,7 +184,17 @@ typedef struct BsdfAlbedo {
     float3 multiple_color;       /* C of the multiple-scattering lobe */
     float3 layer_o;              /* L(mu_o), the dielectric layer's whole albedo */
     float3 layer_average;        /* L_avg */
+    /* The clear coat, when there is one and wo is outside: */
+    float2 coat_at_o;       /* its {E, B} at mu_o */
+    float coat_e_average;   /* its E_avg */
+    float coat_multiple;    /* clearcoat MS(F0_c, 1): its multiple-scattering lobe's colour */
+    float coat_o;           /* clearcoat times its whole albedo at mu_o */
+    float under_coat;       /* 1 - coat_o: what reaches the layers below from wo */
 } BsdfAlbedo;
+
+WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
+    return p->clearcoat_roughness * p->clearcoat_roughness < WF_BSDF_DELTA_ALPHA;
+}
 
 /* L at one cosine from its {E, B}, or L_avg from the averages. */
 WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, const BsdfAlbedo* a, float2 eb) {
@@ -191,6 +215,23 @@ WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
                                  ((1.0f - p->metallic) * (1.0f - p->transmission)) * a.layer_multiple_color;
     a.layer_o = bsdf_layer_albedo(p, &a, a.at_o);
     a.layer_average = bsdf_layer_albedo(p, &a, a.average);
+    a.coat_at_o = make_float2(1.0f, 0.0f);
+    a.coat_e_average = 1.0f;
+    a.coat_multiple = 0.0f;
+    a.coat_o = 0.0f;
+    if (p->clearcoat > 0.0f && mu_o > 0.0f) {
+        if (bsdf_coat_smooth(p)) {
+            a.coat_o = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, mu_o);
+        } else {
+            a.coat_at_o = ggx_albedo(mu_o, p->clearcoat_roughness);
+            a.coat_e_average = ggx_albedo_average(p->clearcoat_roughness).x;
+            a.coat_multiple =
+                p->clearcoat * multiple_scattering_color(bsdf_gray(WF_BSDF_COAT_F0), 1.0f, a.coat_e_average).x;
+            a.coat_o = p->clearcoat * schlick_albedo(a.coat_at_o, bsdf_gray(WF_BSDF_COAT_F0), 1.0f).x +
+                       a.coat_multiple * (1.0f - a.coat_at_o.x);
+        }
+    }
+    a.under_coat = 1.0f - a.coat_o;
     return a;
 }
 
@@ -209,10 +250,25 @@ WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAlbedo* a) {
     return bsdf_diffuse_albedo(p) * (bsdf_gray(1.0f) - a->layer_o) + a->multiple_color * (1.0f - a->at_o.x);
 }
 
+/* The probability that sampling chooses the clear coat's GGX lobe (its
+ * multiple scattering is sampled with the base, by the hemisphere sampler),
+ * in proportion to its albedo at wo against the layers' below it. */
+WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
+    if (!(a->coat_o > 0.0f)) return 0.0f;
+    const float e_coat = a->coat_o - a->coat_multiple * (1.0f - a->coat_at_o.x);
+    const float e_below =
+        a->under_coat * (bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z)) +
+                         bsdf_luminance(bsdf_base_albedo(p, a))) +
+        a->coat_multiple * (1.0f - a->coat_at_o.x);
+    if (!(e_below > 0.0f)) return 1.0f;
+    return min(max(e_coat / (e_coat + e_below), WF_BSDF_MIN_LOBE_PROBABILITY), 1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
+}
+
 /* The probability that sampling chooses the interface rather than the base
  * (the diffuse and multiple-scattering lobes). */
 WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
-    const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) : 0.0f;
+    const float e_base =
+        wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) + a->coat_multiple * (1.0f - a->coat_at_o.x) : 0.0f;
     if (!(e_base > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
     if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
@@ -286,12 +342,35 @@ WF_INLINE float bsdf_diffuse_pdf(const BsdfParams* p, float3 wi) {
     return p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
 }
 
-/* f and pdf of the non-Dirac lobes together. */
+/* The clear coat's f (both its lobes) and, in *pdf, the density of sampling
+ * wi given that its GGX lobe was chosen; wo.z > 0 and wi.z > 0. */
+WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAlbedo* a, float3 wo, float3 wi, float* pdf) {
+    *pdf = 0.0f;
+    if (bsdf_coat_smooth(p)) return 0.0f;
+    const float alpha = p->clearcoat_roughness * p->clearcoat_roughness;
+    const float3 wm = normalize(wo + wi);
+    const float dot_o = dot(wo, wm);
+    if (!(dot_o > 0.0f)) return 0.0f;
+    *pdf = ggx_pdf_visible(wo, wm, alpha) / (4.0f * dot_o);
+    const float single = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, dot_o) * ggx_d(wm, alpha) *
+                         ggx_g2(wo, wi, alpha) / (4.0f * wo.z * wi.z);
+    return single +
+           a->coat_multiple * multiple_scattering_lobe(a->coat_at_o.x, ggx_albedo(wi.z, p->clearcoat_roughness).x,
+                                                       a->coat_e_average);
+}
+
+/* f and pdf of the non-Dirac lobes together. The clear coat lies over the
+ * rest and keeps from it what it reflects at wo: the rest is weighed by
+ * under_coat = 1 - clearcoat C(mu_o), C the coat's whole albedo (the albedo
+ * scaling of OpenPBR and of Cycles' Principled BSDF: white under a white coat
+ * reflects exactly 1, though the weight depends on wo alone and is not
+ * reciprocal). */
 WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     float3 f = bsdf_gray(0.0f);
     if (!bsdf_has_inside(p) && !(wo.z > 0.0f)) return f;
     const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
+    const float p_coat = bsdf_coat_probability(p, &albedo, wo);
     const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (!bsdf_interface_smooth(p)) {
         float pdf_interface;
@@ -301,6 +380,15 @@ WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float*
     if (wo.z > 0.0f && wi.z > 0.0f) {
         f = f + bsdf_base_eval(p, &albedo, wi.z);
         *pdf += (1.0f - p_interface) * bsdf_diffuse_pdf(p, wi);
+    }
+    if (albedo.coat_o > 0.0f) {
+        f = albedo.under_coat * f;
+        *pdf = (1.0f - p_coat) * *pdf;
+        if (wi.z > 0.0f) {
+            float pdf_coat;
+            f = f + bsdf_gray(bsdf_coat_eval(p, &albedo, wo, wi, &pdf_coat));
+            *pdf += p_coat * pdf_coat;
+        }
     }
     return f;
 }
@@ -318,7 +406,8 @@ WF_INLINE float bsdf_pdf(const BsdfParams* p, float3 wo, float3 wi) {
 
 WF_INLINE int bsdf_is_delta(const BsdfParams* p) {
     const float3 albedo = bsdf_diffuse_albedo(p);
-    return bsdf_interface_smooth(p) && !(albedo.x + albedo.y + albedo.z > 0.0f);
+    return bsdf_interface_smooth(p) && !(albedo.x + albedo.y + albedo.z > 0.0f) &&
+           (!(p->clearcoat > 0.0f) || bsdf_coat_smooth(p));
 }
 
 WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
@@ -329,6 +418,30 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
     s.delta = 0;
     if (wo.z == 0.0f || (!bsdf_has_inside(p) && !(wo.z > 0.0f))) return s;
     const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
+    const float p_coat = bsdf_coat_probability(p, &albedo, wo);
+    if (u.x < p_coat) {
+        if (bsdf_coat_smooth(p)) {
+            s.wi = make_float3(-wo.x, -wo.y, wo.z);
+            s.f = bsdf_gray(albedo.coat_o / wo.z);
+            s.pdf = p_coat;
+            s.delta = 1;
+            return s;
+        }
+        const float alpha = p->clearcoat_roughness * p->clearcoat_roughness;
+        const float3 wm = ggx_sample_visible(wo, alpha, make_float2(u.y, u.z));
+        s.wi = 2.0f * dot(wo, wm) * wm - wo;
+        if (!(s.wi.z > 0.0f)) return s;
+        float pdf;
+        const float3 f = bsdf_eval_pdf(p, wo, s.wi, &pdf);
+        if (pdf > 0.0f) {
+            s.f = f;
+            s.pdf = pdf;
+        }
+        return s;
+    }
+    /* (u.x - p_coat) / (1 - p_coat) is uniform again: it chooses below the coat. */
+    u.x = min((u.x - p_coat) / (1.0f - p_coat), 0x1.fffffep-1f);
+    const float p_below = 1.0f - p_coat;
     const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (u.x < p_interface) {
         /* u.x / p_interface is uniform again: it picks reflection or refraction. */
@@ -339,19 +452,19 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
             const float p_reflect = bsdf_reflect_probability(r, t);
             if (u_choice < p_reflect) {
                 s.wi = make_float3(-wo.x, -wo.y, wo.z);
-                s.f = r / fabs(wo.z);
-                s.pdf = p_interface * p_reflect;
+                s.f = albedo.under_coat * r / fabs(wo.z);
+                s.pdf = p_below * p_interface * p_reflect;
             } else if (p->thin_walled) {
                 s.wi = -wo;
-                s.f = t / fabs(wo.z);
-                s.pdf = p_interface * (1.0f - p_reflect);
+                s.f = albedo.under_coat * t / fabs(wo.z);
+                s.pdf = p_below * p_interface * (1.0f - p_reflect);
             } else {
                 float3 wi;
                 if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
                 const float etap = wo.z > 0.0f ? p->ior : 1.0f / p->ior;
                 s.wi = wi;
-                s.f = t / (fabs(wi.z) * etap * etap);
-                s.pdf = p_interface * (1.0f - p_reflect);
+                s.f = albedo.under_coat * t / (fabs(wi.z) * etap * etap);
+                s.pdf = p_below * p_interface * (1.0f - p_reflect);
             }
             s.delta = 1;
             return s;

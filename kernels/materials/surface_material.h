@@ -23,6 +23,12 @@ inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, c
     b.specular = m->specular * surface_texture(scene, p, WF_TEXTURE_SPECULAR).w;
     b.specular_color = vload3(0, m->specular_color) * surface_texture(scene, p, WF_TEXTURE_SPECULAR_COLOR).xyz;
     b.thin_walled = (m->flags & WF_MATERIAL_THIN_WALLED) != 0u;
+    b.clearcoat = m->clearcoat;
+    b.clearcoat_roughness = m->clearcoat_roughness;
+    if (b.clearcoat > 0.0f) {
+        b.clearcoat *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x;
+        b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
+    }
     b.hemisphere = hemisphere;
     return b;
 }

@@ -58,7 +58,7 @@ TEST_F(GltfLoaderTest, PrimitivesWithoutMaterialShareOneDefault) {
 // Textures are test_texture.cpp's; KHR_texture_transform is now supported.
 TEST_F(GltfLoaderTest, UnknownExtensionsWarnButLoad) {
     GltfDocument doc;
-    doc.gltf["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
+    doc.gltf["extensionsUsed"] = {"KHR_materials_anisotropy", "KHR_texture_transform"};
     doc.gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}}};
     json primitive = triangle_primitive(doc.add_vec3(kTriangle));
     primitive["material"] = 0;
@@ -66,7 +66,7 @@ TEST_F(GltfLoaderTest, UnknownExtensionsWarnButLoad) {
     const Scene scene = load_gltf(doc.write(dir_ / "textured.gltf"));
     expect_well_formed(scene);
     ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0], "extensions not supported, ignored: KHR_materials_clearcoat");
+    EXPECT_EQ(scene.warnings[0], "extensions not supported, ignored: KHR_materials_anisotropy");
 }
 
 // A supported extension's property the renderer does not read is named once,
@@ -133,6 +133,30 @@ TEST_F(GltfLoaderTest, SpecularColourThinWallsAndVertexColoursAreRead) {
     EXPECT_EQ(scene.colors[5], glm::vec4(0, 0, 0.2f, 1)); // 51 / 255, alpha 1 for VEC3
     EXPECT_EQ(scene.colors[8], glm::vec4(1.0f));          // no COLOR_0: white
     EXPECT_TRUE(scene.has_vertex_colors());
+}
+
+// KHR_materials_clearcoat's factors are read (absent: no coat); its normal
+// texture is not, and says so.
+TEST_F(GltfLoaderTest, ClearcoatIsReadAndItsNormalMapWarned) {
+    GltfDocument doc;
+    doc.gltf["extensionsUsed"] = {"KHR_materials_clearcoat"};
+    doc.gltf["materials"] = {
+        {{"extensions",
+          {{"KHR_materials_clearcoat",
+            {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.25}, {"clearcoatNormalTexture", {{"index", 0}}}}}}}},
+        json::object()};
+    const int positions = doc.add_vec3(kTriangle);
+    for (int m = 0; m < 2; ++m) {
+        json primitive = triangle_primitive(positions);
+        primitive["material"] = m;
+        doc.add_mesh_node("mesh " + std::to_string(m), primitive);
+    }
+    const Scene scene = load_gltf(doc.write(dir_ / "coat.gltf"));
+    EXPECT_FLOAT_EQ(scene.materials[0].clearcoat, 0.75f);
+    EXPECT_FLOAT_EQ(scene.materials[0].clearcoat_roughness, 0.25f);
+    EXPECT_FLOAT_EQ(scene.materials[1].clearcoat, 0.0f);
+    EXPECT_EQ(scene.warnings, (std::vector<std::string>{"material properties not supported, ignored: "
+                                                        "KHR_materials_clearcoat.clearcoatNormalTexture (1 material(s))"}));
 }
 
 TEST_F(GltfLoaderTest, VertexColoursOutsideZeroOneAreNamed) {

@@ -43,6 +43,8 @@ BsdfParams material(vec3 base, float metallic, float roughness, float transmissi
     p.specular = 1.0f;
     p.specular_color = vec3(1.0f);
     p.thin_walled = 0;
+    p.clearcoat = 0.0f;
+    p.clearcoat_roughness = 0.0f;
     p.hemisphere = hemisphere;
     return p;
 }
@@ -50,6 +52,13 @@ BsdfParams material(vec3 base, float metallic, float roughness, float transmissi
 // The same material as a thin wall (glTF's transmission without KHR_materials_volume).
 BsdfParams thin(BsdfParams p) {
     p.thin_walled = 1;
+    return p;
+}
+
+// The same material under a clear coat (KHR_materials_clearcoat).
+BsdfParams coated(BsdfParams p, float clearcoat, float roughness) {
+    p.clearcoat = clearcoat;
+    p.clearcoat_roughness = roughness;
     return p;
 }
 
@@ -93,6 +102,10 @@ std::vector<Config> configs() {
          }()},
         {"thin glass r0.3", thin(material(white, 0.0f, 0.3f, 1.0f, 1.5f))},
         {"thin mix t0.5 r0.6", thin(material(vec3(0.9f, 0.5f, 0.2f), 0.2f, 0.6f, 0.5f, 1.5f))},
+        {"coat r0.3 over dielectric r0.7", coated(material(white, 0.0f, 0.7f), 1.0f, 0.3f)},
+        {"coat r1 over metal r0.4", coated(material(white, 1.0f, 0.4f), 1.0f, 1.0f)},
+        {"smooth coat over metal r0.3", coated(material(white, 1.0f, 0.3f), 1.0f, 0.0f)},
+        {"half coat r0.5 over colour r0.5", coated(material(vec3(0.8f, 0.3f, 0.1f), 0.0f, 0.5f), 0.5f, 0.5f)},
     };
     const std::vector<Named> transmissive = {
         {"rough glass r0.3 ior1.5", material(white, 0.0f, 0.3f, 1.0f, 1.5f)},
@@ -267,6 +280,9 @@ TEST(Bsdf, Reciprocity) {
     double worst_transmission = 0.0;
     for (const Config& c : configs()) {
         if (c.wo.z < 0.0f || c.wo.z != 1.0f) continue; // one per material
+        // A clear coat weighs what lies below it by its albedo at wo alone
+        // (bsdf_eval_pdf): energy-conserving, by design not reciprocal.
+        if (c.p.clearcoat > 0.0f) continue;
         for (int k = 0; k < 2000; ++k) {
             vec3 wo = random_unit(rng), wi = random_unit(rng);
             if (c.p.transmission == 0.0f) wo.z = std::fabs(wo.z), wi.z = std::fabs(wi.z);
@@ -451,6 +467,8 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
         materials.push_back(material(vec3(1.0f), 0.0f, r, 1.0f, 1.5f));
         materials.push_back(material(vec3(0.7f), 0.2f, r, 0.5f, 1.33f));
         materials.push_back(thin(material(vec3(0.9f), 0.0f, r, 0.8f, 1.5f)));
+        materials.push_back(coated(material(vec3(0.8f), 0.0f, 0.5f), 1.0f, r));
+        materials.push_back(coated(material(vec3(1.0f), 0.0f, r, 1.0f, 1.5f), 0.7f, r));
     }
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> pick(0.0f, 1.0f);
@@ -490,7 +508,7 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
 const char* const kBsdfKernel = R"CLC(
 __kernel void bsdf_probe(__global const float* in, __global float* out) {
     const uint i = get_global_id(0);
-    __global const float* a = in + 19 * i;
+    __global const float* a = in + 21 * i;
     BsdfParams p;
     p.base_color = (float3)(a[0], a[1], a[2]);
     p.metallic = a[3];
@@ -500,6 +518,8 @@ __kernel void bsdf_probe(__global const float* in, __global float* out) {
     p.specular = 1.0f;
     p.specular_color = (float3)(a[17], 1.0f, 1.0f);
     p.thin_walled = (uint)a[18];
+    p.clearcoat = a[19];
+    p.clearcoat_roughness = a[20];
     p.hemisphere = (uint)a[7];
     const float3 wo = (float3)(a[8], a[9], a[10]);
     const float3 wi = (float3)(a[11], a[12], a[13]);
@@ -530,10 +550,12 @@ TEST(Bsdf, DeviceMatchesHost) {
             p.specular_color = vec3(1.7f, 1.0f, 1.0f);
             return p;
         }(),
+        coated(material(vec3(0.7f), 0.0f, 0.5f), 1.0f, 0.3f), coated(material(vec3(0.9f), 1.0f, 0.2f), 0.6f, 0.0f),
+        coated(material(vec3(1.0f), 0.0f, 0.2f, 1.0f, 1.5f), 1.0f, 0.4f),
     };
     std::mt19937 rng(5);
     const size_t n = 600;
-    constexpr size_t kRow = 19;
+    constexpr size_t kRow = 21;
     std::vector<float> in(kRow * n);
     for (size_t i = 0; i < n; ++i) {
         const BsdfParams& p = materials[i % materials.size()];
@@ -542,7 +564,8 @@ TEST(Bsdf, DeviceMatchesHost) {
         const vec3 u = uniforms(rng);
         const float row[kRow] = {p.base_color.x, p.base_color.y, p.base_color.z, p.metallic, p.roughness,
                                  p.transmission, p.ior, float(p.hemisphere), wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
-                                 u.x, u.y, u.z, p.specular_color.x, float(p.thin_walled)};
+                                 u.x, u.y, u.z, p.specular_color.x, float(p.thin_walled), p.clearcoat,
+                                 p.clearcoat_roughness};
         std::copy(row, row + kRow, in.begin() + kRow * i);
     }
     const OpenClDevice& device = test::cpu_device();
@@ -562,6 +585,8 @@ TEST(Bsdf, DeviceMatchesHost) {
         BsdfParams p = material(vec3(a[0], a[1], a[2]), a[3], a[4], a[5], a[6], uint32_t(a[7]));
         p.specular_color.x = a[17];
         p.thin_walled = uint32_t(a[18]);
+        p.clearcoat = a[19];
+        p.clearcoat_roughness = a[20];
         const vec3 wo(a[8], a[9], a[10]), wi(a[11], a[12], a[13]), u(a[14], a[15], a[16]);
         const vec3 f = wf_device::bsdf_eval(&p, wo, wi);
         const BsdfSample s = wf_device::bsdf_sample(&p, wo, u);

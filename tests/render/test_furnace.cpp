@@ -109,6 +109,7 @@ Region measure(const FilmReadout& film, const SceneCamera& camera, ImageSize siz
 struct Case {
     const char* name;
     float metallic, roughness;
+    float clearcoat = 0.0f, clearcoat_roughness = 0.0f; // KHR_materials_clearcoat over the rest
 };
 
 class WhiteFurnace : public ::testing::TestWithParam<Case> {};
@@ -120,6 +121,8 @@ TEST_P(WhiteFurnace, ASphereReturnsTheSkyEverywhereTheRimIncluded) {
     scene.materials[m].metallic = c.metallic;
     scene.materials[m].roughness = c.roughness;
     scene.materials[m].specular = 1.0f; // glTF's default: the dielectric has its specular layer
+    scene.materials[m].clearcoat = c.clearcoat;
+    scene.materials[m].clearcoat_roughness = c.clearcoat_roughness;
     add_smooth_sphere(scene, m);
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
 
@@ -151,7 +154,9 @@ INSTANTIATE_TEST_SUITE_P(Materials, WhiteFurnace,
                          ::testing::Values(Case{"dielectric_r0.05", 0.0f, 0.05f}, Case{"dielectric_r0.25", 0.0f, 0.25f},
                                            Case{"dielectric_r0.5", 0.0f, 0.5f}, Case{"dielectric_r1", 0.0f, 1.0f},
                                            Case{"metal_r0.25", 1.0f, 0.25f}, Case{"metal_r0.5", 1.0f, 0.5f},
-                                           Case{"metal_r1", 1.0f, 1.0f}),
+                                           Case{"metal_r1", 1.0f, 1.0f},
+                                           Case{"coat_r0_over_dielectric_r0.5", 0.0f, 0.5f, 1.0f, 0.0f},
+                                           Case{"coat_r0.5_over_metal_r0.25", 1.0f, 0.25f, 1.0f, 0.5f}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                              std::string name = info.param.name;
                              for (char& ch : name)
