@@ -130,6 +130,8 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         store3(dm.specular_color, m.specular_color);
         dm.clearcoat = m.clearcoat;
         dm.clearcoat_roughness = m.clearcoat_roughness;
+        store3(dm.sheen_color, m.sheen_color);
+        dm.sheen_roughness = m.sheen_roughness;
         store3(dm.emission, m.emission);
         dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);

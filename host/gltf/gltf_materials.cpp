@@ -68,6 +68,11 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
     converted.specular = unit_factor(
         extension_number(material, "KHR_materials_specular", "specularFactor", 1.0), where, "specularFactor");
     converted.specular_color = extension_color(material, "KHR_materials_specular", "specularColorFactor", where);
+    // sheenColorFactor defaults to black (no sheen); read as a colour, then kept to [0, 1].
+    if (material.extensions.count("KHR_materials_sheen") &&
+        material.extensions.at("KHR_materials_sheen").Has("sheenColorFactor"))
+        converted.sheen_color =
+            glm::min(extension_color(material, "KHR_materials_sheen", "sheenColorFactor", where), glm::vec3(1.0f));
     // Without KHR_materials_volume, or with its thickness 0, glTF's
     // transmission is through a thin wall (KHR_materials_volume, "Thin-walled").
     const double thickness = extension_number(material, "KHR_materials_volume", "thicknessFactor", 0.0);
@@ -79,6 +84,8 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
     converted.clearcoat_roughness =
         unit_factor(extension_number(material, "KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0), where,
                     "clearcoatRoughnessFactor");
+    converted.sheen_roughness = unit_factor(
+        extension_number(material, "KHR_materials_sheen", "sheenRoughnessFactor", 0.0), where, "sheenRoughnessFactor");
     // KHR_materials_ior allows 0 as "a perfect absorber"; that, and anything below 1, is not supported.
     const double ior = extension_number(material, "KHR_materials_ior", "ior", 1.5);
     if (!(ior >= 1.0 && ior < 1e3)) fail(where, "ior " + std::to_string(ior) + " is not in [1, 1000)");

@@ -200,6 +200,8 @@ void GltfTextures::convert(const tinygltf::Material& material, size_t index, Sce
     extension_slot(WF_TEXTURE_TRANSMISSION, "KHR_materials_transmission", "transmissionTexture", false);
     extension_slot(WF_TEXTURE_CLEARCOAT, "KHR_materials_clearcoat", "clearcoatTexture", false);
     extension_slot(WF_TEXTURE_CLEARCOAT_ROUGHNESS, "KHR_materials_clearcoat", "clearcoatRoughnessTexture", false);
+    extension_slot(WF_TEXTURE_SHEEN_COLOR, "KHR_materials_sheen", "sheenColorTexture", true);
+    extension_slot(WF_TEXTURE_SHEEN_ROUGHNESS, "KHR_materials_sheen", "sheenRoughnessTexture", false);
 
     if (!std::isfinite(material.normalTexture.scale)) fail(where, "normalTexture.scale is not finite");
     out.normal_scale = float(material.normalTexture.scale);

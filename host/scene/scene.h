@@ -35,6 +35,8 @@ struct SceneMaterial {
     glm::vec3 specular_color{1.0f}; // KHR_materials_specular: tints the dielectric layer's F0
     float clearcoat = 0.0f;         // KHR_materials_clearcoat: a coat of ior 1.5 over the rest, this much
     float clearcoat_roughness = 0.0f;
+    glm::vec3 sheen_color{0.0f};    // KHR_materials_sheen: fibres' back-scattering over the rest; black: none
+    float sheen_roughness = 0.0f;
     glm::vec3 emission{0.0f};   // radiance Le (W sr^-1 m^-2), emitted by the front face
     bool double_sided = false;  // one-sided surfaces emit from the front face only
     // Transmission through a sheet of no thickness, as glTF has it without

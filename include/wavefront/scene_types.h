@@ -76,7 +76,8 @@ typedef struct TriangleColors {
 #define WF_MATERIAL_VERTEX_COLORS 4u /* its triangles' COLOR_0 is in the colors buffer */
 
 /* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior,
- * _specular and _clearcoat; kernels/bsdf/ says what each factor does to the BSDF. */
+ * _specular, _clearcoat and _sheen; kernels/bsdf/ says what each factor does
+ * to the BSDF. */
 typedef struct Material {
     float base_color[3]; /* linear, in [0, 1] */
     uint32_t flags;      /* WF_MATERIAL_* */
@@ -89,6 +90,8 @@ typedef struct Material {
     float specular_color[3]; /* KHR_materials_specular's specularColorFactor, in [0, inf) */
     float clearcoat;           /* KHR_materials_clearcoat's factor, in [0, 1]; 0: no coat */
     float clearcoat_roughness; /* in [0, 1] */
+    float sheen_color[3];      /* KHR_materials_sheen's sheenColorFactor, in [0, 1]; black: no sheen */
+    float sheen_roughness;     /* in [0, 1] */
     uint32_t pad[3];
 } Material;
 
@@ -136,7 +139,9 @@ typedef struct TextureRef {
 #define WF_TEXTURE_TRANSMISSION 6u       /* linear; R times transmission (KHR_materials_transmission) */
 #define WF_TEXTURE_CLEARCOAT 7u          /* linear; R times clearcoat (KHR_materials_clearcoat) */
 #define WF_TEXTURE_CLEARCOAT_ROUGHNESS 8u /* linear; G times clearcoat_roughness */
-#define WF_TEXTURE_SLOTS 9u
+#define WF_TEXTURE_SHEEN_COLOR 9u        /* sRGB; RGB times sheen_color (KHR_materials_sheen) */
+#define WF_TEXTURE_SHEEN_ROUGHNESS 10u   /* linear; A times sheen_roughness */
+#define WF_TEXTURE_SLOTS 11u
 
 #define WF_ALPHA_OPAQUE 0u /* alpha ignored */
 #define WF_ALPHA_MASK 1u   /* surface absent where alpha < alpha_cutoff */

@@ -58,6 +58,16 @@ WF_INLINE float2 ggx_albedo_average(float roughness) {
     return a + tr * (b - a);
 }
 
+/* The sheen lobe's albedo S(mu, r) (bsdf/sheen.h), interpolated as ggx_albedo. */
+WF_INLINE float sheen_albedo(float mu, float roughness) {
+    float tm, tr;
+    const int m = albedo_cell(sqrt(max(mu, 0.0f)), &tm), r = albedo_cell(roughness, &tr);
+    const float a = sheen_albedo_table[r][m] + tm * (sheen_albedo_table[r][m + 1] - sheen_albedo_table[r][m]);
+    const float b =
+        sheen_albedo_table[r + 1][m] + tm * (sheen_albedo_table[r + 1][m + 1] - sheen_albedo_table[r + 1][m]);
+    return a + tr * (b - a);
+}
+
 /* The single-scattering albedo of a Schlick interface, from {E, B}. */
 WF_INLINE float3 schlick_albedo(float2 eb, float3 f0, float f90) {
     return f0 * (eb.x - eb.y) + make_float3(f90, f90, f90) * eb.y;

@@ -18,6 +18,9 @@
 // averages 2 ∫ E mu dmu and 2 ∫ B mu dmu of the tables as bsdf/albedo.h
 // interpolates them (piecewise linear in sqrt(mu), integrated exactly), so that an
 // energy-compensating lobe built from them integrates to what it promises.
+// Then the sheen lobe's albedo (bsdf/sheen.h), S(mu, r) = ∫ D V mu_i dw_i,
+// on the same grid, by a midpoint rule in (sqrt(mu_i), phi_i) (the lobe
+// peaks at grazing angles, where sqrt spreads the rows).
 // The CTest AlbedoTables.MatchTheirGenerator reruns this and compares bytes.
 #include <cstdio>
 #include <cstdint>
@@ -26,6 +29,7 @@
 
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
+#include "bsdf/sheen.h"
 
 namespace {
 
@@ -66,6 +70,23 @@ Entry integrate(float mu, float roughness) {
     return {sum.e / kSamples, sum.b / kSamples};
 }
 
+double sheen_albedo(float mu, float roughness) {
+    using namespace wf_device;
+    constexpr int kRows = 256, kColumns = 256; // in sqrt(mu_i), and in phi_i over [0, pi] (the lobe is even in phi)
+    const float3 wo = make_float3(std::sqrt(1.0f - mu * mu), 0.0f, mu);
+    double sum = 0.0;
+    for (int i = 0; i < kRows; ++i) {
+        const double x = (i + 0.5) / kRows, mu_i = x * x; // dmu_i = 2 x dx
+        const double s = std::sqrt(1.0 - mu_i * mu_i);
+        for (int j = 0; j < kColumns; ++j) {
+            const double phi = (j + 0.5) * 3.14159265358979323846 / kColumns;
+            const float3 wi = make_float3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(mu_i));
+            sum += double(sheen_eval(wo, wi, roughness)) * mu_i * 2.0 * x;
+        }
+    }
+    return sum * (1.0 / kRows) * (2.0 * 3.14159265358979323846 / kColumns);
+}
+
 // Values as printed, so that the averages are those of the printed tables.
 double printed(double v) {
     char text[32];
@@ -97,7 +118,8 @@ int main() {
                 " * ggx_albedo_table[r][mu] = {E, B}: the GGX interface's directional albedo with\n"
                 " * F = 1 and with F = Schlick's weight, roughness r and sqrt(mu), mu the\n"
                 " * view cosine, each on %d points from 0 to 1; ggx_albedo_average_table[r]:\n"
-                " * their hemispherical averages. Read through bsdf/albedo.h. */\n",
+                " * their hemispherical averages; sheen_albedo_table[r][mu]: the sheen lobe's\n"
+                " * albedo on the same grid. Read through bsdf/albedo.h. */\n",
                 kSize);
     std::printf("#ifndef WF_ALBEDO_TABLES_H\n#define WF_ALBEDO_TABLES_H\n\n#include \"wavefront/compat.h\"\n\n");
     std::printf("#define WF_ALBEDO_SIZE %d\n\nWF_DEVICE_BEGIN\n\n", kSize);
@@ -122,6 +144,16 @@ int main() {
             b[m] = table[r][m].b;
         }
         std::printf("    {%.6ff, %.6ff},\n", hemispherical_average(e), hemispherical_average(b));
+    }
+    std::printf("};\n\nWF_CONSTANT float sheen_albedo_table[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {\n");
+    for (int r = 0; r < kSize; ++r) {
+        std::printf("    {");
+        for (int m = 0; m < kSize; ++m) {
+            const float x = float(m) / (kSize - 1);
+            const float mu = m == 0 ? kMinMu : x * x;
+            std::printf("%s%.6ff", m ? (m % 8 ? ", " : ",\n     ") : "", sheen_albedo(mu, float(r) / (kSize - 1)));
+        }
+        std::printf("},\n");
     }
     std::printf("};\n\nWF_DEVICE_END\n\n#endif /* WF_ALBEDO_TABLES_H */\n");
     return 0;

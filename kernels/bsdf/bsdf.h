@@ -60,6 +60,12 @@
  *    of well under 1% of its albedo, and the multiple scattering of a rough
  *    refracting interface is not compensated (that needs tables over ior too).
  *
+ *  - the sheen (KHR_materials_sheen, bsdf/sheen.h), over the above: the
+ *    Charlie lobe, sheen_color D V / max(1, S(mu_o)), S its albedo from the
+ *    tables (Neubelt's V lets S pass 1 at grazing views below roughness 0.5;
+ *    the division keeps the lobe from reflecting more than it receives), and
+ *    the layers below weighed by 1 - max(sheen_color) min(S(mu_o), 1), glTF's
+ *    albedo scaling: white sheen over white reflects 1; not reciprocal.
  *  - the clear coat (KHR_materials_clearcoat), over all the above: a GGX
  *    dielectric interface of ior 1.5 (Schlick, F0 0.04, F90 1) of its own
  *    roughness, weighted by `clearcoat`, with its multiple-scattering lobe,
@@ -103,6 +109,7 @@
 #include "bsdf/albedo.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
+#include "bsdf/sheen.h"
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
 #define WF_BSDF_COAT_F0 0.04f /* KHR_materials_clearcoat: a dielectric of ior 1.5 */
@@ -121,6 +128,8 @@ typedef struct BsdfParams {
     uint32_t thin_walled; /* transmission through a thin sheet: no bending, both sides alike */
     float clearcoat;           /* KHR_materials_clearcoat: the coat's weight, 0 for none */
     float clearcoat_roughness; /* perceptual, alpha = roughness^2 */
+    float3 sheen_color;        /* KHR_materials_sheen: black for none */
+    float sheen_roughness;
     uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
 } BsdfParams;
 
@@ -190,6 +199,10 @@ typedef struct BsdfAlbedo {
     float coat_multiple;    /* clearcoat MS(F0_c, 1): its multiple-scattering lobe's colour */
     float coat_o;           /* clearcoat times its whole albedo at mu_o */
     float under_coat;       /* 1 - coat_o: what reaches the layers below from wo */
+    /* The sheen, when there is one and wo is outside: */
+    float sheen_norm;       /* 1 / max(1, S(mu_o)): its lobe never reflects more than it receives */
+    float sheen_o;          /* max(sheen_color) S(mu_o) sheen_norm, at most 1 */
+    float under_sheen;      /* 1 - sheen_o: what reaches the layers below the sheen */
 } BsdfAlbedo;
 
 WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
@@ -232,6 +245,15 @@ WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
         }
     }
     a.under_coat = 1.0f - a.coat_o;
+    a.sheen_norm = 1.0f;
+    a.sheen_o = 0.0f;
+    const float sheen_max = max(max(p->sheen_color.x, p->sheen_color.y), p->sheen_color.z);
+    if (sheen_max > 0.0f && mu_o > 0.0f) {
+        const float s = sheen_albedo(mu_o, p->sheen_roughness);
+        a.sheen_norm = 1.0f / max(1.0f, s);
+        a.sheen_o = sheen_max * s * a.sheen_norm;
+    }
+    a.under_sheen = 1.0f - a.sheen_o;
     return a;
 }
 
@@ -257,8 +279,10 @@ WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAlbedo* a, 
     if (!(a->coat_o > 0.0f)) return 0.0f;
     const float e_coat = a->coat_o - a->coat_multiple * (1.0f - a->coat_at_o.x);
     const float e_below =
-        a->under_coat * (bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z)) +
-                         bsdf_luminance(bsdf_base_albedo(p, a))) +
+        a->under_coat * (a->under_sheen * (bsdf_luminance(bsdf_reflectance(p, wo.z)) +
+                                           bsdf_luminance(bsdf_transmittance(p, wo.z)) +
+                                           bsdf_luminance(bsdf_base_albedo(p, a))) +
+                         a->sheen_o) +
         a->coat_multiple * (1.0f - a->coat_at_o.x);
     if (!(e_below > 0.0f)) return 1.0f;
     return min(max(e_coat / (e_coat + e_below), WF_BSDF_MIN_LOBE_PROBABILITY), 1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
@@ -267,8 +291,9 @@ WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAlbedo* a, 
 /* The probability that sampling chooses the interface rather than the base
  * (the diffuse and multiple-scattering lobes). */
 WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
-    const float e_base =
-        wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) + a->coat_multiple * (1.0f - a->coat_at_o.x) : 0.0f;
+    const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) +
+                                           a->coat_multiple * (1.0f - a->coat_at_o.x) + a->sheen_o
+                                     : 0.0f;
     if (!(e_base > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
     if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
@@ -381,6 +406,10 @@ WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float*
         f = f + bsdf_base_eval(p, &albedo, wi.z);
         *pdf += (1.0f - p_interface) * bsdf_diffuse_pdf(p, wi);
     }
+    if (albedo.sheen_o > 0.0f) {
+        f = albedo.under_sheen * f;
+        if (wi.z > 0.0f) f = f + p->sheen_color * (albedo.sheen_norm * sheen_eval(wo, wi, p->sheen_roughness));
+    }
     if (albedo.coat_o > 0.0f) {
         f = albedo.under_coat * f;
         *pdf = (1.0f - p_coat) * *pdf;
@@ -407,7 +436,8 @@ WF_INLINE float bsdf_pdf(const BsdfParams* p, float3 wo, float3 wi) {
 WF_INLINE int bsdf_is_delta(const BsdfParams* p) {
     const float3 albedo = bsdf_diffuse_albedo(p);
     return bsdf_interface_smooth(p) && !(albedo.x + albedo.y + albedo.z > 0.0f) &&
-           (!(p->clearcoat > 0.0f) || bsdf_coat_smooth(p));
+           (!(p->clearcoat > 0.0f) || bsdf_coat_smooth(p)) &&
+           !(p->sheen_color.x + p->sheen_color.y + p->sheen_color.z > 0.0f);
 }
 
 WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
@@ -442,6 +472,7 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
     /* (u.x - p_coat) / (1 - p_coat) is uniform again: it chooses below the coat. */
     u.x = min((u.x - p_coat) / (1.0f - p_coat), 0x1.fffffep-1f);
     const float p_below = 1.0f - p_coat;
+    const float below = albedo.under_coat * albedo.under_sheen; /* the weight of Dirac lobes below coat and sheen */
     const float p_interface = bsdf_interface_probability(p, &albedo, wo);
     if (u.x < p_interface) {
         /* u.x / p_interface is uniform again: it picks reflection or refraction. */
@@ -452,18 +483,18 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
             const float p_reflect = bsdf_reflect_probability(r, t);
             if (u_choice < p_reflect) {
                 s.wi = make_float3(-wo.x, -wo.y, wo.z);
-                s.f = albedo.under_coat * r / fabs(wo.z);
+                s.f = below * r / fabs(wo.z);
                 s.pdf = p_below * p_interface * p_reflect;
             } else if (p->thin_walled) {
                 s.wi = -wo;
-                s.f = albedo.under_coat * t / fabs(wo.z);
+                s.f = below * t / fabs(wo.z);
                 s.pdf = p_below * p_interface * (1.0f - p_reflect);
             } else {
                 float3 wi;
                 if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
                 const float etap = wo.z > 0.0f ? p->ior : 1.0f / p->ior;
                 s.wi = wi;
-                s.f = albedo.under_coat * t / (fabs(wi.z) * etap * etap);
+                s.f = below * t / (fabs(wi.z) * etap * etap);
                 s.pdf = p_below * p_interface * (1.0f - p_reflect);
             }
             s.delta = 1;

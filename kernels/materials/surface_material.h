@@ -29,6 +29,12 @@ inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, c
         b.clearcoat *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x;
         b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
     }
+    b.sheen_color = vload3(0, m->sheen_color);
+    b.sheen_roughness = m->sheen_roughness;
+    if (any(b.sheen_color > 0.0f)) {
+        b.sheen_color *= surface_texture(scene, p, WF_TEXTURE_SHEEN_COLOR).xyz;
+        b.sheen_roughness *= surface_texture(scene, p, WF_TEXTURE_SHEEN_ROUGHNESS).w;
+    }
     b.hemisphere = hemisphere;
     return b;
 }

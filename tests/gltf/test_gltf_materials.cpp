@@ -135,15 +135,16 @@ TEST_F(GltfLoaderTest, SpecularColourThinWallsAndVertexColoursAreRead) {
     EXPECT_TRUE(scene.has_vertex_colors());
 }
 
-// KHR_materials_clearcoat's factors are read (absent: no coat); its normal
-// texture is not, and says so.
-TEST_F(GltfLoaderTest, ClearcoatIsReadAndItsNormalMapWarned) {
+// KHR_materials_clearcoat's and KHR_materials_sheen's factors are read
+// (absent: no coat, no sheen); the coat's normal texture is not, and says so.
+TEST_F(GltfLoaderTest, ClearcoatAndSheenAreReadAndTheCoatNormalMapWarned) {
     GltfDocument doc;
-    doc.gltf["extensionsUsed"] = {"KHR_materials_clearcoat"};
+    doc.gltf["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_materials_sheen"};
     doc.gltf["materials"] = {
         {{"extensions",
           {{"KHR_materials_clearcoat",
-            {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.25}, {"clearcoatNormalTexture", {{"index", 0}}}}}}}},
+            {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.25}, {"clearcoatNormalTexture", {{"index", 0}}}}},
+           {"KHR_materials_sheen", {{"sheenColorFactor", {1, 0.5, 0}}, {"sheenRoughnessFactor", 0.5}}}}}},
         json::object()};
     const int positions = doc.add_vec3(kTriangle);
     for (int m = 0; m < 2; ++m) {
@@ -155,6 +156,9 @@ TEST_F(GltfLoaderTest, ClearcoatIsReadAndItsNormalMapWarned) {
     EXPECT_FLOAT_EQ(scene.materials[0].clearcoat, 0.75f);
     EXPECT_FLOAT_EQ(scene.materials[0].clearcoat_roughness, 0.25f);
     EXPECT_FLOAT_EQ(scene.materials[1].clearcoat, 0.0f);
+    expect_near(scene.materials[0].sheen_color, {1.0f, 0.5f, 0.0f});
+    EXPECT_FLOAT_EQ(scene.materials[0].sheen_roughness, 0.5f);
+    expect_near(scene.materials[1].sheen_color, {0.0f, 0.0f, 0.0f});
     EXPECT_EQ(scene.warnings, (std::vector<std::string>{"material properties not supported, ignored: "
                                                         "KHR_materials_clearcoat.clearcoatNormalTexture (1 material(s))"}));
 }

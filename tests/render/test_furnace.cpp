@@ -110,6 +110,7 @@ struct Case {
     const char* name;
     float metallic, roughness;
     float clearcoat = 0.0f, clearcoat_roughness = 0.0f; // KHR_materials_clearcoat over the rest
+    float sheen = 0.0f, sheen_roughness = 0.0f;         // a white KHR_materials_sheen of this much
 };
 
 class WhiteFurnace : public ::testing::TestWithParam<Case> {};
@@ -123,6 +124,8 @@ TEST_P(WhiteFurnace, ASphereReturnsTheSkyEverywhereTheRimIncluded) {
     scene.materials[m].specular = 1.0f; // glTF's default: the dielectric has its specular layer
     scene.materials[m].clearcoat = c.clearcoat;
     scene.materials[m].clearcoat_roughness = c.clearcoat_roughness;
+    scene.materials[m].sheen_color = glm::vec3(c.sheen);
+    scene.materials[m].sheen_roughness = c.sheen_roughness;
     add_smooth_sphere(scene, m);
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
 
@@ -156,7 +159,8 @@ INSTANTIATE_TEST_SUITE_P(Materials, WhiteFurnace,
                                            Case{"metal_r0.25", 1.0f, 0.25f}, Case{"metal_r0.5", 1.0f, 0.5f},
                                            Case{"metal_r1", 1.0f, 1.0f},
                                            Case{"coat_r0_over_dielectric_r0.5", 0.0f, 0.5f, 1.0f, 0.0f},
-                                           Case{"coat_r0.5_over_metal_r0.25", 1.0f, 0.25f, 1.0f, 0.5f}),
+                                           Case{"coat_r0.5_over_metal_r0.25", 1.0f, 0.25f, 1.0f, 0.5f},
+                                           Case{"sheen_r0.3_over_dielectric_r0.5", 0.0f, 0.5f, 0.0f, 0.0f, 1.0f, 0.3f}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                              std::string name = info.param.name;
                              for (char& ch : name)

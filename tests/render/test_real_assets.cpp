@@ -37,7 +37,6 @@ std::vector<fs::path> asset_files() {
 // supported (from ../shared/scenes-real/INVENTORY.md).
 const std::map<std::string, std::vector<std::string>> kExpectedWarnings = {
     {"Fox.gltf", {"skin"}},
-    {"ToyCar.gltf", {"KHR_materials_sheen"}},
     {"Box.gltf", {"no light"}},
     {"DamagedHelmet.glb", {"occlusion maps"}},
 };

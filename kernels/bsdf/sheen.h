@@ -1,0 +1,43 @@
+/* sheen.h — KHR_materials_sheen's lobe, the back-scattering of fibres (cloth,
+ * velvet), in the local shading frame; shared by the kernels and the host.
+ *
+ * The "Charlie" distribution of Estevez and Kulla ("Production Friendly
+ * Microfacet Sheen BRDF", 2017), D(wh) = (2 + 1/a) sin(theta_h)^(1/a) / (2 pi),
+ * a = roughness^2, with the visibility of Neubelt and Pettineo ("Crafting a
+ * Next-Gen Material Pipeline for The Order: 1886", 2013),
+ * V = 1 / (4 (mu_i + mu_o - mu_i mu_o)): glTF's own choice. f = colour D V.
+ * Below WF_SHEEN_MIN_ROUGHNESS the exponent 1/a overflows float's precision
+ * for sin(theta_h) near 1, so the roughness is clamped there, as Filament does.
+ * Its directional albedo E_s(mu, r) (the table in albedo_tables.h, from this
+ * code) tells the BSDF how much light the sheen takes from the layers below. */
+#ifndef WF_SHEEN_H
+#define WF_SHEEN_H
+
+#include "wavefront/compat.h"
+#include "common/sampling.h"
+
+#define WF_SHEEN_MIN_ROUGHNESS 0.07f
+
+WF_DEVICE_BEGIN
+
+WF_INLINE float sheen_alpha(float roughness) {
+    const float r = max(roughness, WF_SHEEN_MIN_ROUGHNESS);
+    return r * r;
+}
+
+/* D V for wo.z > 0 and wi.z > 0, without the colour. */
+WF_INLINE float sheen_eval(float3 wo, float3 wi, float roughness) {
+    const float3 sum = wo + wi;
+    const float len2 = dot(sum, sum);
+    if (!(len2 > 0.0f) || !(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
+    const float cos2_h = sum.z * sum.z / len2;
+    const float sin2_h = max(1.0f - cos2_h, 0.0f);
+    const float inv_alpha = 1.0f / sheen_alpha(roughness);
+    const float d = (2.0f + inv_alpha) * pow(sin2_h, 0.5f * inv_alpha) * (0.5f * WF_INV_PI);
+    const float v = 1.0f / (4.0f * (wi.z + wo.z - wi.z * wo.z));
+    return d * v;
+}
+
+WF_DEVICE_END
+
+#endif /* WF_SHEEN_H */
