@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The README's gallery: the glossy teapot, Veach's MIS scene, a glass sphere
-# and DamagedHelmet (a real asset, lit by a uniform sky), each rendered with
+# The README's gallery: the glossy teapot, Veach's MIS scene, a glass sphere,
+# DamagedHelmet and ToyCar (real assets, lit by a uniform sky; ToyCar has a
+# clear coat, sheen and thin-walled glass), each rendered with
 # the command printed above its report. Writes bench/results/gallery/*.png and
 # their closing reports (*.txt), whose "render" line is the time the README
 # quotes. Usage: bench/gallery.sh [extra render flags]
@@ -18,3 +19,4 @@ render teapot scenes/cornell-teapot.gltf --width 320 --spp 128 "$@"
 render veach-mis scenes/veach-mis.gltf --width 384 --spp 128 "$@"
 render glass scenes/cornell-glass.gltf --width 320 --spp 128 "$@"
 render damaged-helmet ../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb --width 320 --spp 64 --env-uniform 1 "$@"
+render toy-car ../shared/scenes-real/ToyCar/ToyCar.gltf --width 320 --spp 128 --env-uniform 1 "$@"
