@@ -183,9 +183,11 @@ WF_INLINE float3 bsdf_diffuse_albedo(const BsdfParams* p) {
     return ((1.0f - p->metallic) * (1.0f - p->transmission)) * p->base_color;
 }
 
-/* The interface's albedo tables at one material: {E, B} at mu_o and averaged,
- * and what follows from them for every wi. */
-typedef struct BsdfAlbedo {
+/* What the BSDF needs at one wo, whatever wi: the interface's albedo tables
+ * at mu_o and averaged, what follows from them, and the probabilities of
+ * sampling's lobe choices. The shade stage computes it once per shading point
+ * (bsdf_at_wo) for light sampling's evaluation and BSDF sampling alike. */
+typedef struct BsdfAtWo {
     float2 at_o;
     float2 average;
     float3 layer_f0;             /* bsdf_layer_f0 */
@@ -203,19 +205,22 @@ typedef struct BsdfAlbedo {
     float sheen_norm;       /* 1 / max(1, S(mu_o)): its lobe never reflects more than it receives */
     float sheen_o;          /* max(sheen_color) S(mu_o) sheen_norm, at most 1 */
     float under_sheen;      /* 1 - sheen_o: what reaches the layers below the sheen */
-} BsdfAlbedo;
+    /* Sampling's choices (bsdf_coat_probability, bsdf_interface_probability): */
+    float p_coat;
+    float p_interface;
+} BsdfAtWo;
 
 WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
     return p->clearcoat_roughness * p->clearcoat_roughness < WF_BSDF_DELTA_ALPHA;
 }
 
 /* L at one cosine from its {E, B}, or L_avg from the averages. */
-WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, const BsdfAlbedo* a, float2 eb) {
+WF_INLINE float3 bsdf_layer_albedo(const BsdfParams* p, const BsdfAtWo* a, float2 eb) {
     return schlick_albedo(eb, a->layer_f0, p->specular) + a->layer_multiple_color * (1.0f - eb.x);
 }
 
-WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
-    BsdfAlbedo a;
+WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
+    BsdfAtWo a;
     a.at_o = ggx_albedo(fabs(mu_o), p->roughness);
     a.average = ggx_albedo_average(p->roughness);
     const float e_avg = a.average.x;
@@ -258,7 +263,7 @@ WF_INLINE BsdfAlbedo bsdf_albedo(const BsdfParams* p, float mu_o) {
 }
 
 /* The diffuse and multiple-scattering lobes together, wo.z > 0 and wi.z > 0. */
-WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAlbedo* a, float mu_i) {
+WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAtWo* a, float mu_i) {
     const float2 at_i = ggx_albedo(mu_i, p->roughness);
     const float3 one = bsdf_gray(1.0f);
     const float3 layer_i = bsdf_layer_albedo(p, a, at_i);
@@ -268,14 +273,14 @@ WF_INLINE float3 bsdf_base_eval(const BsdfParams* p, const BsdfAlbedo* a, float 
 }
 
 /* The albedo at wo of what bsdf_base_eval gives, outside. */
-WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAlbedo* a) {
+WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAtWo* a) {
     return bsdf_diffuse_albedo(p) * (bsdf_gray(1.0f) - a->layer_o) + a->multiple_color * (1.0f - a->at_o.x);
 }
 
 /* The probability that sampling chooses the clear coat's GGX lobe (its
  * multiple scattering is sampled with the base, by the hemisphere sampler),
  * in proportion to its albedo at wo against the layers' below it. */
-WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
+WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
     if (!(a->coat_o > 0.0f)) return 0.0f;
     const float e_coat = a->coat_o - a->coat_multiple * (1.0f - a->coat_at_o.x);
     const float e_below =
@@ -290,7 +295,7 @@ WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAlbedo* a, 
 
 /* The probability that sampling chooses the interface rather than the base
  * (the diffuse and multiple-scattering lobes). */
-WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo* a, float3 wo) {
+WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
     const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) +
                                            a->coat_multiple * (1.0f - a->coat_at_o.x) + a->sheen_o
                                      : 0.0f;
@@ -300,6 +305,13 @@ WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAlbedo
     /* Neither lobe starves: a weight f |cos| / pdf stays within 1 / 0.05 of its lobe's. */
     return min(max(e_interface / (e_interface + e_base), WF_BSDF_MIN_LOBE_PROBABILITY),
                1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
+}
+
+WF_INLINE BsdfAtWo bsdf_at_wo(const BsdfParams* p, float3 wo) {
+    BsdfAtWo a = bsdf_albedo(p, wo.z);
+    a.p_coat = bsdf_coat_probability(p, &a, wo);
+    a.p_interface = bsdf_interface_probability(p, &a, wo);
+    return a;
 }
 
 /* The probability of reflecting rather than refracting, given R and T. */
@@ -369,7 +381,7 @@ WF_INLINE float bsdf_diffuse_pdf(const BsdfParams* p, float3 wi) {
 
 /* The clear coat's f (both its lobes) and, in *pdf, the density of sampling
  * wi given that its GGX lobe was chosen; wo.z > 0 and wi.z > 0. */
-WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAlbedo* a, float3 wo, float3 wi, float* pdf) {
+WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAtWo* a, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     if (bsdf_coat_smooth(p)) return 0.0f;
     const float alpha = p->clearcoat_roughness * p->clearcoat_roughness;
@@ -390,13 +402,13 @@ WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAlbedo* a, float3 
  * scaling of OpenPBR and of Cycles' Principled BSDF: white under a white coat
  * reflects exactly 1, though the weight depends on wo alone and is not
  * reciprocal). */
-WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     float3 f = bsdf_gray(0.0f);
     if (!bsdf_has_inside(p) && !(wo.z > 0.0f)) return f;
-    const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
-    const float p_coat = bsdf_coat_probability(p, &albedo, wo);
-    const float p_interface = bsdf_interface_probability(p, &albedo, wo);
+    const BsdfAtWo albedo = *at;
+    const float p_coat = at->p_coat;
+    const float p_interface = at->p_interface;
     if (!bsdf_interface_smooth(p)) {
         float pdf_interface;
         f = bsdf_interface_eval(p, wo, wi, &pdf_interface);
@@ -422,6 +434,11 @@ WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float*
     return f;
 }
 
+WF_INLINE float3 bsdf_eval_pdf(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+    const BsdfAtWo at = bsdf_at_wo(p, wo);
+    return bsdf_eval_pdf_at(p, &at, wo, wi, pdf);
+}
+
 WF_INLINE float3 bsdf_eval(const BsdfParams* p, float3 wo, float3 wi) {
     float pdf;
     return bsdf_eval_pdf(p, wo, wi, &pdf);
@@ -440,15 +457,15 @@ WF_INLINE int bsdf_is_delta(const BsdfParams* p) {
            !(p->sheen_color.x + p->sheen_color.y + p->sheen_color.z > 0.0f);
 }
 
-WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
+WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, float3 wo, float3 u) {
     BsdfSample s;
     s.wi = make_float3(0.0f, 0.0f, 1.0f);
     s.f = bsdf_gray(0.0f);
     s.pdf = 0.0f;
     s.delta = 0;
     if (wo.z == 0.0f || (!bsdf_has_inside(p) && !(wo.z > 0.0f))) return s;
-    const BsdfAlbedo albedo = bsdf_albedo(p, wo.z);
-    const float p_coat = bsdf_coat_probability(p, &albedo, wo);
+    const BsdfAtWo albedo = *at;
+    const float p_coat = at->p_coat;
     if (u.x < p_coat) {
         if (bsdf_coat_smooth(p)) {
             s.wi = make_float3(-wo.x, -wo.y, wo.z);
@@ -462,7 +479,7 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
         s.wi = 2.0f * dot(wo, wm) * wm - wo;
         if (!(s.wi.z > 0.0f)) return s;
         float pdf;
-        const float3 f = bsdf_eval_pdf(p, wo, s.wi, &pdf);
+        const float3 f = bsdf_eval_pdf_at(p, at, wo, s.wi, &pdf);
         if (pdf > 0.0f) {
             s.f = f;
             s.pdf = pdf;
@@ -473,7 +490,7 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
     u.x = min((u.x - p_coat) / (1.0f - p_coat), 0x1.fffffep-1f);
     const float p_below = 1.0f - p_coat;
     const float below = albedo.under_coat * albedo.under_sheen; /* the weight of Dirac lobes below coat and sheen */
-    const float p_interface = bsdf_interface_probability(p, &albedo, wo);
+    const float p_interface = at->p_interface;
     if (u.x < p_interface) {
         /* u.x / p_interface is uniform again: it picks reflection or refraction. */
         const float u_choice = min(u.x / p_interface, 0x1.fffffep-1f);
@@ -518,11 +535,16 @@ WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
         s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
     }
     float pdf;
-    const float3 f = bsdf_eval_pdf(p, wo, s.wi, &pdf);
+    const float3 f = bsdf_eval_pdf_at(p, at, wo, s.wi, &pdf);
     if (!(pdf > 0.0f)) return s;
     s.f = f;
     s.pdf = pdf;
     return s;
+}
+
+WF_INLINE BsdfSample bsdf_sample(const BsdfParams* p, float3 wo, float3 u) {
+    const BsdfAtWo at = bsdf_at_wo(p, wo);
+    return bsdf_sample_at(p, &at, wo, u);
 }
 
 WF_DEVICE_END

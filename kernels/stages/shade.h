@@ -143,6 +143,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
     const float3 geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;
     orthonormal_basis(frame.z, &frame.x, &frame.y);
     const float3 wo = to_local(&frame, -direction);
+    const BsdfAtWo at_wo = bsdf_at_wo(&bsdf, wo); /* once, for both techniques */
     uint outcome = WF_SHADE_FINISHED;
     float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
 
@@ -154,7 +155,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
         const float3 wi = to_local(&frame, ls.wi);
         const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
         float pdf_bsdf;
-        const float3 f = bsdf_eval_pdf(&bsdf, wo, wi, &pdf_bsdf);
+        const float3 f = bsdf_eval_pdf_at(&bsdf, &at_wo, wo, wi, &pdf_bsdf);
         if (counted && ls.pdf > 0.0f && same_side(geometric_normal, ls.wi, wi.z)) {
             const float weight =
                 params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls.delta ? power_heuristic(ls.pdf, pdf_bsdf) : 1.0f;
@@ -172,7 +173,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
 
     /* The continuation, by BSDF sampling. */
     const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF); /* u.w: roulette's */
-    const BsdfSample bs = bsdf_sample(&bsdf, wo, u.xyz);
+    const BsdfSample bs = bsdf_sample_at(&bsdf, &at_wo, wo, u.xyz);
     const float3 wi = from_local(&frame, bs.wi);
     if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
         const float3 weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
