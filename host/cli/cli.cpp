@@ -134,7 +134,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
     ap.arg("--max-depth N").help("Bounces per path; 1 is direct lighting only (default: unlimited, ended by roulette)");
     ap.arg("--seed N").help(with_default("Random seed; the same seed and device give the same bytes", o.settings.seed));
     ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
-    ap.arg("--pool-size N").help(with_default("Paths in flight, at most the pixel count", kDefaultPoolSize));
+    ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: " +
+                                 std::to_string(kDefaultCpuPoolSize) + " for the wavefront on a CPU, where they stay in cache, " +
+                                 std::to_string(kDefaultGpuPoolSize) + " otherwise)");
     ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
     ap.arg("--integrator I").help(with_default("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image", integrator_name(o.settings.integrator)));
     ap.arg("--schedule S").help(with_default("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X)", schedule_name(o.settings.schedule)));

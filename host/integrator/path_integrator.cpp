@@ -39,8 +39,12 @@ double RenderStats::pool_occupancy() const {
     return launches && pool_size ? sum / (double(launches) * pool_size) : 0.0;
 }
 
-uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note) {
-    const uint32_t wanted = requested ? requested : kDefaultPoolSize;
+uint32_t default_pool_size(const std::string& device_type, Integrator integrator) {
+    return device_type == "cpu" && integrator == Integrator::Wavefront ? kDefaultCpuPoolSize : kDefaultGpuPoolSize;
+}
+
+uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note) {
+    const uint32_t wanted = requested ? requested : default_size;
     const uint32_t size = std::min(wanted, pixel_count);
     if (requested && size != requested && note)
         *note = "pool size " + std::to_string(requested) + " capped at the pixel count, " +

@@ -76,10 +76,14 @@ struct RenderStats {
     double pool_occupancy() const;
 };
 
-// The pool size used for a render: the requested one (or a default), never more
-// than the pixel count, since each slot owns whole pixels. `note` says why when
-// it differs from the request.
-uint32_t choose_pool_size(uint32_t requested, uint32_t pixel_count, std::string* note);
+// The default pool for a device of this type ("cpu", "gpu", ...; DeviceInfo::type)
+// and integrator.
+uint32_t default_pool_size(const std::string& device_type, Integrator integrator);
+
+// The pool size used for a render: the requested one (or `default_size`),
+// never more than the pixel count, since each slot owns whole pixels. `note`
+// says why when it differs from the request.
+uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note);
 
 // `pool`, or fewer paths where they would take more than half the memory that
 // `used_bytes` (scene and image) leave, or a larger queue buffer than one

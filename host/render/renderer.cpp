@@ -54,7 +54,8 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
     RenderSettings settings = requested;
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
-    settings.pool_size = choose_pool_size(requested.pool_size, size.width * size.height, &summary_.pool_note);
+    settings.pool_size = choose_pool_size(requested.pool_size, default_pool_size(device.info.type, requested.integrator),
+                                          size.width * size.height, &summary_.pool_note);
 
     const auto start = std::chrono::steady_clock::now();
     const Bvh bvh = build_bvh(scene.positions);

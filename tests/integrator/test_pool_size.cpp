@@ -11,9 +11,12 @@ namespace {
 
 TEST(PoolSize, AtMostThePixelCount) {
     std::string note;
-    EXPECT_EQ(choose_pool_size(0, 1u << 20, &note), 1u << 18); // the default
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("gpu", Integrator::Wavefront), 1u << 20, &note), 1u << 18); // the default
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", Integrator::Wavefront), 1u << 20, &note), 1u << 15);
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", Integrator::Wavefront), 1000, &note), 1000u);
+    EXPECT_EQ(default_pool_size("cpu", Integrator::Megakernel), 1u << 18);
     EXPECT_TRUE(note.empty());
-    EXPECT_EQ(choose_pool_size(5000, 1200, &note), 1200u);
+    EXPECT_EQ(choose_pool_size(5000, default_pool_size("cpu", Integrator::Wavefront), 1200, &note), 1200u);
     EXPECT_NE(note.find("capped at the pixel count"), std::string::npos);
 }
 
