@@ -4,9 +4,9 @@
 // material; fills SceneMaterial's texture fields and the Scene's TextureSet.
 //
 // Conventions:
-// - base colour, emissive and specular colour images are sRGB, the others
-//   linear (glTF 2.0 §3.9 and the extensions); occlusion is not read (a path
-//   tracer computes its own);
+// - base colour, emissive, specular colour and sheen colour images are sRGB,
+//   the others linear (glTF 2.0 §3.9 and the extensions); occlusion is not
+//   read (a path tracer computes its own);
 // - an image is decoded once however many textures use it; each (image,
 //   sampler, colour space) gets one TextureInfo;
 // - texCoord 0 and 1 are supported; a higher set warns and reads TEXCOORD_0;

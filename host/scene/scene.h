@@ -22,7 +22,8 @@ namespace wf {
 struct EnvironmentMap; // environment_map.h
 
 // glTF 2.0 metallic-roughness with KHR_materials_transmission, _volume
-// (its thickness only), _ior and _specular. The defaults here are a plain Lambertian surface (specular 0),
+// (its thickness only), _ior, _specular, _clearcoat and _sheen
+// (kernels/bsdf/bsdf.h). The defaults here are a plain Lambertian surface (specular 0),
 // what scenes built in code mean; the glTF loader sets glTF's own defaults.
 struct SceneMaterial {
     std::string name;

@@ -511,7 +511,10 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
             }
         }
         const vec3 wi = random_unit(rng);
-        ASSERT_TRUE(finite(wf_device::bsdf_eval(&p, wo, wi))) << "roughness " << p.roughness;
+        const vec3 f = wf_device::bsdf_eval(&p, wo, wi);
+        ASSERT_TRUE(finite(f)) << "roughness " << p.roughness;
+        // Layers weighed by what those above leave (coat, sheen) must never go negative.
+        ASSERT_GE(std::min(f.x, std::min(f.y, f.z)), 0.0f) << "roughness " << p.roughness << " wo.z " << wo.z;
         ASSERT_TRUE(std::isfinite(wf_device::bsdf_pdf(&p, wo, wi))) << "roughness " << p.roughness;
     }
     test::report_measured("no NaN/Inf: " + std::to_string(samples) + " samples, largest weight f|cos|/pdf " +
