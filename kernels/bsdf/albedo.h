@@ -24,11 +24,11 @@
 
 WF_DEVICE_BEGIN
 
-/* Below this 1 - E_avg (roughness under about 0.12) multiple scattering is
- * left out: it would return at most 0.1%, from a lobe peaked at grazing
- * angles that the cosine sampling of bsdf.h would meet with weights in the
- * thousands. */
-#define WF_ALBEDO_MIN_LOSS 1e-3f
+/* Below this 1 - E_avg multiple scattering is left out: the tables' six
+ * decimals cannot tell the loss from nothing. Its lobe, peaked at grazing
+ * angles where the loss is small, is sampled by its own shape (loss_sample_mu),
+ * so no weight grows as the loss vanishes. */
+#define WF_ALBEDO_MIN_LOSS 1e-5f
 
 /* The grid cell and weight of x in [0, 1] on WF_ALBEDO_SIZE points. */
 WF_INLINE int albedo_cell(float x, float* t) {
@@ -66,6 +66,40 @@ WF_INLINE float sheen_albedo(float mu, float roughness) {
     const float b =
         sheen_albedo_table[r + 1][m] + tm * (sheen_albedo_table[r + 1][m + 1] - sheen_albedo_table[r + 1][m]);
     return a + tr * (b - a);
+}
+
+/* The multiple-scattering lobe's shape at roughness r, (1 - E(mu)) mu dmu, as a
+ * histogram over the grid's segments in x = sqrt(mu) of the grid row nearest
+ * r (ggx_loss_cdf): a cosine drawn from it, and its density in solid angle
+ * with a uniform azimuth. A row whose loss is nothing has no histogram
+ * (loss_histogram_empty): draw nothing from it. */
+WF_INLINE int loss_row(float roughness) {
+    const int r = (int)(min(max(roughness, 0.0f), 1.0f) * (float)(WF_ALBEDO_SIZE - 1) + 0.5f);
+    return r < WF_ALBEDO_SIZE - 1 ? r : WF_ALBEDO_SIZE - 1;
+}
+
+WF_INLINE int loss_histogram_empty(float roughness) {
+    return !(ggx_loss_cdf[loss_row(roughness)][WF_ALBEDO_SIZE - 1] > 0.0f);
+}
+
+WF_INLINE float loss_sample_mu(float roughness, float u) {
+    const int r = loss_row(roughness);
+    int k = 0;
+    while (k < WF_ALBEDO_SIZE - 2 && !(u < ggx_loss_cdf[r][k + 1])) ++k;
+    const float lo = ggx_loss_cdf[r][k], hi = ggx_loss_cdf[r][k + 1];
+    const float t = hi > lo ? min(max((u - lo) / (hi - lo), 0.0f), 1.0f) : 0.5f;
+    const float x = ((float)k + t) / (float)(WF_ALBEDO_SIZE - 1);
+    return x * x;
+}
+
+WF_INLINE float loss_pdf(float roughness, float mu) {
+    if (!(mu > 0.0f)) return 0.0f;
+    const int r = loss_row(roughness);
+    const float x = sqrt(min(mu, 1.0f));
+    const int k = min((int)(x * (float)(WF_ALBEDO_SIZE - 1)), WF_ALBEDO_SIZE - 2);
+    const float mass = ggx_loss_cdf[r][k + 1] - ggx_loss_cdf[r][k];
+    /* mass / h in x; / (2 x) in mu; / (2 pi) over the azimuth */
+    return mass * (float)(WF_ALBEDO_SIZE - 1) / (4.0f * WF_PI * x);
 }
 
 /* The single-scattering albedo of a Schlick interface, from {E, B}. */

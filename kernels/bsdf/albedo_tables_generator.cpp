@@ -18,10 +18,14 @@
 // averages 2 ∫ E mu dmu and 2 ∫ B mu dmu of the tables as bsdf/albedo.h
 // interpolates them (piecewise linear in sqrt(mu), integrated exactly), so that an
 // energy-compensating lobe built from them integrates to what it promises.
+// Then, per roughness, the cumulative distribution over the grid's segments
+// in x = sqrt(mu) of (1 - E) mu dmu, E as interpolated: the shape of the
+// multiple-scattering lobe, which bsdf/albedo.h samples as a histogram.
 // Then the sheen lobe's albedo (bsdf/sheen.h), S(mu, r) = ∫ D V mu_i dw_i,
 // on the same grid, by a midpoint rule in (sqrt(mu_i), phi_i) (the lobe
 // peaks at grazing angles, where sqrt spreads the rows).
 // The CTest AlbedoTables.MatchTheirGenerator reruns this and compares bytes.
+#include <algorithm>
 #include <cstdio>
 #include <cstdint>
 #include <cstdlib>
@@ -110,6 +114,28 @@ double hemispherical_average(const std::vector<double>& f) {
     return 4.0 * sum;
 }
 
+// The cumulative masses at the grid points of (1 - E(x)) 2 x^3 dx (that is
+// (1 - E) mu dmu), E piecewise linear through `e`, normalised to end at 1:
+// a polynomial of degree 4 on each segment, integrated exactly by three-point
+// Gauss-Legendre. All zero when E is 1 everywhere.
+std::vector<double> loss_cdf(const std::vector<double>& e) {
+    const double nodes[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
+    const double weights[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+    const double h = 1.0 / (kSize - 1);
+    std::vector<double> cdf(kSize, 0.0);
+    for (int i = 0; i + 1 < kSize; ++i) {
+        double mass = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double t = 0.5 * (1.0 + nodes[k]), x = (i + t) * h;
+            mass += 0.5 * h * weights[k] * (1.0 - (e[i] + t * (e[i + 1] - e[i]))) * 2.0 * x * x * x;
+        }
+        cdf[i + 1] = cdf[i] + std::max(mass, 0.0);
+    }
+    const double total = cdf[kSize - 1];
+    for (double& c : cdf) c = total > 0.0 ? c / total : 0.0;
+    return cdf;
+}
+
 } // namespace
 
 int main() {
@@ -118,7 +144,8 @@ int main() {
                 " * ggx_albedo_table[r][mu] = {E, B}: the GGX interface's directional albedo with\n"
                 " * F = 1 and with F = Schlick's weight, roughness r and sqrt(mu), mu the\n"
                 " * view cosine, each on %d points from 0 to 1; ggx_albedo_average_table[r]:\n"
-                " * their hemispherical averages; sheen_albedo_table[r][mu]: the sheen lobe's\n"
+                " * their hemispherical averages; ggx_loss_cdf[r][i]: the distribution of\n"
+                " * (1 - E) mu dmu up to grid point i; sheen_albedo_table[r][mu]: the sheen lobe's\n"
                 " * albedo on the same grid. Read through bsdf/albedo.h. */\n",
                 kSize);
     std::printf("#ifndef WF_ALBEDO_TABLES_H\n#define WF_ALBEDO_TABLES_H\n\n#include \"wavefront/compat.h\"\n\n");
@@ -144,6 +171,15 @@ int main() {
             b[m] = table[r][m].b;
         }
         std::printf("    {%.6ff, %.6ff},\n", hemispherical_average(e), hemispherical_average(b));
+    }
+    std::printf("};\n\nWF_CONSTANT float ggx_loss_cdf[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {\n");
+    for (int r = 0; r < kSize; ++r) {
+        std::vector<double> e(kSize);
+        for (int m = 0; m < kSize; ++m) e[m] = table[r][m].e;
+        const std::vector<double> cdf = loss_cdf(e);
+        std::printf("    {");
+        for (int m = 0; m < kSize; ++m) std::printf("%s%.7ff", m ? (m % 8 ? ", " : ",\n     ") : "", cdf[m]);
+        std::printf("},\n");
     }
     std::printf("};\n\nWF_CONSTANT float sheen_albedo_table[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {\n");
     for (int r = 0; r < kSize; ++r) {

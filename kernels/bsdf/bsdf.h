@@ -42,10 +42,10 @@
  *    C (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)), outside only, returns it:
  *    C = metallic MS(base, 1) + (1 - metallic)(1 - transmission) MS(F0_d, F90_d),
  *    MS the multiple-scattering colour of a Schlick interface. A white metal
- *    then reflects 1 from roughness 0.13 up; below, where the loss is under
- *    0.1% on average but peaked at grazing angles, the lobe is left out
- *    (WF_ALBEDO_MIN_LOSS) and a grazing view loses up to 2.4%: sampling the
- *    lobe by the cosine would give weights in the hundreds there.
+ *    then reflects 1 at every roughness above the Dirac limit. At low
+ *    roughness the loss is small on average but peaked at grazing angles, so
+ *    the lobe is sampled by its own shape (bsdf_loss_probability,
+ *    loss_sample_mu), where the cosine gave weights in the thousands.
  *  - the diffuse base, outside only: (1 - metallic)(1 - transmission) base / pi
  *    (1 - L(mu_o))(1 - L(mu_i)) / (1 - L_avg), L the dielectric layer's whole
  *    albedo (single scattering with Schlick's F_d plus its multiple scattering)
@@ -87,8 +87,10 @@
  * at wo against that of everything below; else, below the coat,
  * the interface with probability p_int, in
  * proportion to the luminances of R(wo.z) + T(wo.z) against the albedo of the
- * diffuse and multiple-scattering lobes at wo.z, which are sampled together by
- * the hemisphere sampler; at least
+ * base lobes at wo.z (diffuse, multiple scattering, sheen), which are sampled
+ * together: by the hemisphere sampler, or with probability p_loss (at most
+ * 0.9, in proportion to its albedo) by the shape of the interface's
+ * multiple-scattering lobe; at least
  * WF_BSDF_MIN_LOBE_PROBABILITY for each while both are there, 1 where
  * none is, and 0 where the interface neither reflects nor transmits (specular
  * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
@@ -113,6 +115,9 @@
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
 #define WF_BSDF_COAT_F0 0.04f /* KHR_materials_clearcoat: a dielectric of ior 1.5 */
+/* The coat's multiple scattering, sampled by the cosine with the base, is left
+ * out below this 1 - E_avg: it would return at most 0.1% of its tiny share. */
+#define WF_BSDF_COAT_MIN_LOSS 1e-3f
 #define WF_BSDF_MIN_LOBE_PROBABILITY 0.05f
 
 WF_DEVICE_BEGIN
@@ -205,9 +210,11 @@ typedef struct BsdfAtWo {
     float sheen_norm;       /* 1 / max(1, S(mu_o)): its lobe never reflects more than it receives */
     float sheen_o;          /* max(sheen_color) S(mu_o) sheen_norm, at most 1 */
     float under_sheen;      /* 1 - sheen_o: what reaches the layers below the sheen */
-    /* Sampling's choices (bsdf_coat_probability, bsdf_interface_probability): */
+    /* Sampling's choices (bsdf_coat_probability, bsdf_interface_probability,
+     * bsdf_loss_probability): */
     float p_coat;
     float p_interface;
+    float p_loss; /* within the base lobes: drawing from the multiple-scattering lobe's shape */
 } BsdfAtWo;
 
 WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
@@ -244,7 +251,9 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
             a.coat_at_o = ggx_albedo(mu_o, p->clearcoat_roughness);
             a.coat_e_average = ggx_albedo_average(p->clearcoat_roughness).x;
             a.coat_multiple =
-                p->clearcoat * multiple_scattering_color(bsdf_gray(WF_BSDF_COAT_F0), 1.0f, a.coat_e_average).x;
+                1.0f - a.coat_e_average > WF_BSDF_COAT_MIN_LOSS
+                    ? p->clearcoat * multiple_scattering_color(bsdf_gray(WF_BSDF_COAT_F0), 1.0f, a.coat_e_average).x
+                    : 0.0f;
             a.coat_o = p->clearcoat * schlick_albedo(a.coat_at_o, bsdf_gray(WF_BSDF_COAT_F0), 1.0f).x +
                        a.coat_multiple * (1.0f - a.coat_at_o.x);
         }
@@ -295,10 +304,27 @@ WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAtWo* a, fl
 
 /* The probability that sampling chooses the interface rather than the base
  * (the diffuse and multiple-scattering lobes). */
+/* The albedo at wo of every lobe the base sampling draws for: the diffuse,
+ * the multiple scattering of the interface and of the coat, the sheen. */
+WF_INLINE float bsdf_base_group_albedo(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
+    return wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) + a->coat_multiple * (1.0f - a->coat_at_o.x) +
+                             a->sheen_o
+                       : 0.0f;
+}
+
+/* Within the base lobes, the probability of drawing from the interface's
+ * multiple-scattering lobe's shape rather than the hemisphere sampler, in
+ * proportion to that lobe's albedo; at most 0.9, so that the hemisphere
+ * sampler still covers every lobe. */
+WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
+    const float e_loss = wo.z > 0.0f ? bsdf_luminance(a->multiple_color) * (1.0f - a->at_o.x) : 0.0f;
+    const float e_base = bsdf_base_group_albedo(p, a, wo);
+    if (!(e_loss > 0.0f) || !(e_base > 0.0f) || loss_histogram_empty(p->roughness)) return 0.0f;
+    return min(e_loss / e_base, 0.9f);
+}
+
 WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
-    const float e_base = wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) +
-                                           a->coat_multiple * (1.0f - a->coat_at_o.x) + a->sheen_o
-                                     : 0.0f;
+    const float e_base = bsdf_base_group_albedo(p, a, wo);
     if (!(e_base > 0.0f)) return 1.0f;
     const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
     if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
@@ -311,6 +337,7 @@ WF_INLINE BsdfAtWo bsdf_at_wo(const BsdfParams* p, float3 wo) {
     BsdfAtWo a = bsdf_albedo(p, wo.z);
     a.p_coat = bsdf_coat_probability(p, &a, wo);
     a.p_interface = bsdf_interface_probability(p, &a, wo);
+    a.p_loss = bsdf_loss_probability(p, &a, wo);
     return a;
 }
 
@@ -374,9 +401,13 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
     return t * (d * g * fabs(dot_i * dot_o) / (denom2 * fabs(cos_i) * fabs(cos_o) * etap * etap));
 }
 
-WF_INLINE float bsdf_diffuse_pdf(const BsdfParams* p, float3 wi) {
+/* The density of the base lobes' sampling: the hemisphere sampler, or with
+ * probability p_loss the multiple-scattering lobe's shape. */
+WF_INLINE float bsdf_base_pdf(const BsdfParams* p, const BsdfAtWo* a, float3 wi) {
     if (!(wi.z > 0.0f)) return 0.0f;
-    return p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
+    const float hemisphere = p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
+    if (!(a->p_loss > 0.0f)) return hemisphere;
+    return (1.0f - a->p_loss) * hemisphere + a->p_loss * loss_pdf(p->roughness, wi.z);
 }
 
 /* The clear coat's f (both its lobes) and, in *pdf, the density of sampling
@@ -416,7 +447,7 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
     }
     if (wo.z > 0.0f && wi.z > 0.0f) {
         f = f + bsdf_base_eval(p, &albedo, wi.z);
-        *pdf += (1.0f - p_interface) * bsdf_diffuse_pdf(p, wi);
+        *pdf += (1.0f - p_interface) * bsdf_base_pdf(p, at, wi);
     }
     if (albedo.sheen_o > 0.0f) {
         f = albedo.under_sheen * f;
@@ -530,6 +561,12 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
             if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
         }
         s.wi = wi;
+    } else if (min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f) < at->p_loss) {
+        /* (u.x - p_interface) / (1 - p_interface) is uniform again: it chose the shape of the loss. */
+        const float mu = loss_sample_mu(p->roughness, u.y);
+        const float r = sqrt(max(0.0f, 1.0f - mu * mu));
+        const float phi = 2.0f * WF_PI * u.z;
+        s.wi = make_float3(r * cos(phi), r * sin(phi), mu);
     } else {
         const float2 ud = make_float2(u.y, u.z);
         s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);

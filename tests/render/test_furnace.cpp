@@ -156,7 +156,7 @@ TEST_P(WhiteFurnace, ASphereReturnsTheSkyEverywhereTheRimIncluded) {
 INSTANTIATE_TEST_SUITE_P(Materials, WhiteFurnace,
                          ::testing::Values(Case{"dielectric_r0.05", 0.0f, 0.05f}, Case{"dielectric_r0.25", 0.0f, 0.25f},
                                            Case{"dielectric_r0.5", 0.0f, 0.5f}, Case{"dielectric_r1", 0.0f, 1.0f},
-                                           Case{"metal_r0.25", 1.0f, 0.25f}, Case{"metal_r0.5", 1.0f, 0.5f},
+                                           Case{"metal_r0.1", 1.0f, 0.1f}, Case{"metal_r0.25", 1.0f, 0.25f}, Case{"metal_r0.5", 1.0f, 0.5f},
                                            Case{"metal_r1", 1.0f, 1.0f},
                                            Case{"coat_r0_over_dielectric_r0.5", 0.0f, 0.5f, 1.0f, 0.0f},
                                            Case{"coat_r0.5_over_metal_r0.25", 1.0f, 0.25f, 1.0f, 0.5f},
