@@ -91,6 +91,13 @@ double sheen_albedo(float mu, float roughness) {
     return sum * (1.0 / kRows) * (2.0 * 3.14159265358979323846 / kColumns);
 }
 
+// The grid: roughness r and sqrt(mu) evenly from 0 to 1, the mu = 0 column at kMinMu.
+float grid_roughness(int r) { return float(r) / (kSize - 1); }
+float grid_mu(int m) {
+    const float x = float(m) / (kSize - 1);
+    return m == 0 ? kMinMu : x * x;
+}
+
 // Values as printed, so that the averages are those of the printed tables.
 double printed(double v) {
     char text[32];
@@ -155,9 +162,7 @@ int main() {
     for (int r = 0; r < kSize; ++r) {
         std::printf("    {");
         for (int m = 0; m < kSize; ++m) {
-            const float x = float(m) / (kSize - 1);
-            const float mu = m == 0 ? kMinMu : x * x;
-            const Entry e = integrate(mu, float(r) / (kSize - 1));
+            const Entry e = integrate(grid_mu(m), grid_roughness(r));
             table[r][m] = {printed(e.e), printed(e.b)};
             std::printf("%s{%.6ff, %.6ff}", m ? (m % 4 ? ", " : ",\n     ") : "", e.e, e.b);
         }
@@ -184,11 +189,8 @@ int main() {
     std::printf("};\n\nWF_CONSTANT float sheen_albedo_table[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {\n");
     for (int r = 0; r < kSize; ++r) {
         std::printf("    {");
-        for (int m = 0; m < kSize; ++m) {
-            const float x = float(m) / (kSize - 1);
-            const float mu = m == 0 ? kMinMu : x * x;
-            std::printf("%s%.6ff", m ? (m % 8 ? ", " : ",\n     ") : "", sheen_albedo(mu, float(r) / (kSize - 1)));
-        }
+        for (int m = 0; m < kSize; ++m)
+            std::printf("%s%.6ff", m ? (m % 8 ? ", " : ",\n     ") : "", sheen_albedo(grid_mu(m), grid_roughness(r)));
         std::printf("},\n");
     }
     std::printf("};\n\nWF_DEVICE_END\n\n#endif /* WF_ALBEDO_TABLES_H */\n");

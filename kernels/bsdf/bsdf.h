@@ -286,58 +286,56 @@ WF_INLINE float3 bsdf_base_albedo(const BsdfParams* p, const BsdfAtWo* a) {
     return bsdf_diffuse_albedo(p) * (bsdf_gray(1.0f) - a->layer_o) + a->multiple_color * (1.0f - a->at_o.x);
 }
 
+/* The luminances at wo that sampling's lobe choices weigh, computed once by
+ * bsdf_at_wo: the interface's R + T, the albedo of bsdf_base_eval's lobes, and
+ * that of every lobe the base sampling draws for (those, the coat's multiple
+ * scattering and the sheen; 0 from inside). */
+typedef struct BsdfLobeAlbedos {
+    float interface;
+    float base_eval;
+    float base_group;
+} BsdfLobeAlbedos;
+
 /* The probability that sampling chooses the clear coat's GGX lobe (its
  * multiple scattering is sampled with the base, by the hemisphere sampler),
  * in proportion to its albedo at wo against the layers' below it. */
-WF_INLINE float bsdf_coat_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
+WF_INLINE float bsdf_coat_probability(const BsdfAtWo* a, const BsdfLobeAlbedos* e) {
     if (!(a->coat_o > 0.0f)) return 0.0f;
     const float e_coat = a->coat_o - a->coat_multiple * (1.0f - a->coat_at_o.x);
-    const float e_below =
-        a->under_coat * (a->under_sheen * (bsdf_luminance(bsdf_reflectance(p, wo.z)) +
-                                           bsdf_luminance(bsdf_transmittance(p, wo.z)) +
-                                           bsdf_luminance(bsdf_base_albedo(p, a))) +
-                         a->sheen_o) +
-        a->coat_multiple * (1.0f - a->coat_at_o.x);
+    const float e_below = a->under_coat * (a->under_sheen * (e->interface + e->base_eval) + a->sheen_o) +
+                          a->coat_multiple * (1.0f - a->coat_at_o.x);
     if (!(e_below > 0.0f)) return 1.0f;
     return min(max(e_coat / (e_coat + e_below), WF_BSDF_MIN_LOBE_PROBABILITY), 1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
-}
-
-/* The probability that sampling chooses the interface rather than the base
- * (the diffuse and multiple-scattering lobes). */
-/* The albedo at wo of every lobe the base sampling draws for: the diffuse,
- * the multiple scattering of the interface and of the coat, the sheen. */
-WF_INLINE float bsdf_base_group_albedo(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
-    return wo.z > 0.0f ? bsdf_luminance(bsdf_base_albedo(p, a)) + a->coat_multiple * (1.0f - a->coat_at_o.x) +
-                             a->sheen_o
-                       : 0.0f;
 }
 
 /* Within the base lobes, the probability of drawing from the interface's
  * multiple-scattering lobe's shape rather than the hemisphere sampler, in
  * proportion to that lobe's albedo; at most 0.9, so that the hemisphere
  * sampler still covers every lobe. */
-WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
+WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo, const BsdfLobeAlbedos* e) {
     const float e_loss = wo.z > 0.0f ? bsdf_luminance(a->multiple_color) * (1.0f - a->at_o.x) : 0.0f;
-    const float e_base = bsdf_base_group_albedo(p, a, wo);
-    if (!(e_loss > 0.0f) || !(e_base > 0.0f) || loss_histogram_empty(p->roughness)) return 0.0f;
-    return min(e_loss / e_base, 0.9f);
+    if (!(e_loss > 0.0f) || !(e->base_group > 0.0f) || loss_histogram_empty(p->roughness)) return 0.0f;
+    return min(e_loss / e->base_group, 0.9f);
 }
 
-WF_INLINE float bsdf_interface_probability(const BsdfParams* p, const BsdfAtWo* a, float3 wo) {
-    const float e_base = bsdf_base_group_albedo(p, a, wo);
-    if (!(e_base > 0.0f)) return 1.0f;
-    const float e_interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
-    if (!(e_interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
+/* The probability that sampling chooses the interface rather than the base lobes. */
+WF_INLINE float bsdf_interface_probability(const BsdfLobeAlbedos* e) {
+    if (!(e->base_group > 0.0f)) return 1.0f;
+    if (!(e->interface > 0.0f)) return 0.0f; /* a plain Lambertian surface: no sample is wasted */
     /* Neither lobe starves: a weight f |cos| / pdf stays within 1 / 0.05 of its lobe's. */
-    return min(max(e_interface / (e_interface + e_base), WF_BSDF_MIN_LOBE_PROBABILITY),
+    return min(max(e->interface / (e->interface + e->base_group), WF_BSDF_MIN_LOBE_PROBABILITY),
                1.0f - WF_BSDF_MIN_LOBE_PROBABILITY);
 }
 
 WF_INLINE BsdfAtWo bsdf_at_wo(const BsdfParams* p, float3 wo) {
     BsdfAtWo a = bsdf_albedo(p, wo.z);
-    a.p_coat = bsdf_coat_probability(p, &a, wo);
-    a.p_interface = bsdf_interface_probability(p, &a, wo);
-    a.p_loss = bsdf_loss_probability(p, &a, wo);
+    BsdfLobeAlbedos e;
+    e.interface = bsdf_luminance(bsdf_reflectance(p, wo.z)) + bsdf_luminance(bsdf_transmittance(p, wo.z));
+    e.base_eval = bsdf_luminance(bsdf_base_albedo(p, &a));
+    e.base_group = wo.z > 0.0f ? e.base_eval + a.coat_multiple * (1.0f - a.coat_at_o.x) + a.sheen_o : 0.0f;
+    a.p_coat = bsdf_coat_probability(&a, &e);
+    a.p_interface = bsdf_interface_probability(&e);
+    a.p_loss = bsdf_loss_probability(p, &a, wo, &e);
     return a;
 }
 
@@ -437,7 +435,6 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
     *pdf = 0.0f;
     float3 f = bsdf_gray(0.0f);
     if (!bsdf_has_inside(p) && !(wo.z > 0.0f)) return f;
-    const BsdfAtWo albedo = *at;
     const float p_coat = at->p_coat;
     const float p_interface = at->p_interface;
     if (!bsdf_interface_smooth(p)) {
@@ -446,19 +443,19 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
         *pdf = p_interface * pdf_interface;
     }
     if (wo.z > 0.0f && wi.z > 0.0f) {
-        f = f + bsdf_base_eval(p, &albedo, wi.z);
+        f = f + bsdf_base_eval(p, at, wi.z);
         *pdf += (1.0f - p_interface) * bsdf_base_pdf(p, at, wi);
     }
-    if (albedo.sheen_o > 0.0f) {
-        f = albedo.under_sheen * f;
-        if (wi.z > 0.0f) f = f + p->sheen_color * (albedo.sheen_norm * sheen_eval(wo, wi, p->sheen_roughness));
+    if (at->sheen_o > 0.0f) {
+        f = at->under_sheen * f;
+        if (wi.z > 0.0f) f = f + p->sheen_color * (at->sheen_norm * sheen_eval(wo, wi, p->sheen_roughness));
     }
-    if (albedo.coat_o > 0.0f) {
-        f = albedo.under_coat * f;
+    if (at->coat_o > 0.0f) {
+        f = at->under_coat * f;
         *pdf = (1.0f - p_coat) * *pdf;
         if (wi.z > 0.0f) {
             float pdf_coat;
-            f = f + bsdf_gray(bsdf_coat_eval(p, &albedo, wo, wi, &pdf_coat));
+            f = f + bsdf_gray(bsdf_coat_eval(p, at, wo, wi, &pdf_coat));
             *pdf += p_coat * pdf_coat;
         }
     }
@@ -495,12 +492,11 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
     s.pdf = 0.0f;
     s.delta = 0;
     if (wo.z == 0.0f || (!bsdf_has_inside(p) && !(wo.z > 0.0f))) return s;
-    const BsdfAtWo albedo = *at;
     const float p_coat = at->p_coat;
     if (u.x < p_coat) {
         if (bsdf_coat_smooth(p)) {
             s.wi = make_float3(-wo.x, -wo.y, wo.z);
-            s.f = bsdf_gray(albedo.coat_o / wo.z);
+            s.f = bsdf_gray(at->coat_o / wo.z);
             s.pdf = p_coat;
             s.delta = 1;
             return s;
@@ -520,7 +516,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
     /* (u.x - p_coat) / (1 - p_coat) is uniform again: it chooses below the coat. */
     u.x = min((u.x - p_coat) / (1.0f - p_coat), 0x1.fffffep-1f);
     const float p_below = 1.0f - p_coat;
-    const float below = albedo.under_coat * albedo.under_sheen; /* the weight of Dirac lobes below coat and sheen */
+    const float below = at->under_coat * at->under_sheen; /* the weight of Dirac lobes below coat and sheen */
     const float p_interface = at->p_interface;
     if (u.x < p_interface) {
         /* u.x / p_interface is uniform again: it picks reflection or refraction. */
