@@ -4,8 +4,8 @@
  *
  * Shared code is written against this vocabulary: fixed-width integers, float2
  * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
- * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, acos,
- * atan2, floor, pow and copysign, clz, and WF_GLOBAL for the address space of
+ * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, sinpi,
+ * cospi, acos, atan2, floor, pow and copysign, clz, and WF_GLOBAL for the address space of
  * scene buffers, WF_CONSTANT for tables at program scope. For SIMD inside a
  * work-item (the BVH traversal): float4 and
  * int4 lanes with their arithmetic, max and fabs, the relational
@@ -95,6 +95,11 @@ using std::floor;
 using std::pow;
 using std::sin;
 using std::sqrt;
+/* sin(pi x) and cos(pi x). The device's need no argument reduction (PoCL's
+ * sin and cos always call one); the host's are sin and cos of the rounded
+ * product, as the shared code computed before it had these. */
+inline float sinpi(float x) { return std::sin(3.14159265358979323846f * x); }
+inline float cospi(float x) { return std::cos(3.14159265358979323846f * x); }
 inline uint32_t clz(uint32_t x) { return x == 0 ? 32u : static_cast<uint32_t>(__builtin_clz(x)); }
 
 /* Four lanes: GLM's arithmetic, and the built-ins it lacks. */

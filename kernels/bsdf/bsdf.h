@@ -561,8 +561,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
         /* (u.x - p_interface) / (1 - p_interface) is uniform again: it chose the shape of the loss. */
         const float mu = loss_sample_mu(p->roughness, u.y);
         const float r = sqrt(max(0.0f, 1.0f - mu * mu));
-        const float phi = 2.0f * WF_PI * u.z;
-        s.wi = make_float3(r * cos(phi), r * sin(phi), mu);
+        s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
     } else {
         const float2 ud = make_float2(u.y, u.z);
         s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);

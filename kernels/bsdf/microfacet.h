@@ -60,10 +60,9 @@ WF_INLINE float3 ggx_sample_visible(float3 w, float alpha, float2 u) {
     const float3 t2 = cross(vh, t1);
     /* A point of the disk, squeezed onto the projection of the visible half. */
     const float r = sqrt(u.x);
-    const float phi = 2.0f * WF_PI * u.y;
-    const float p1 = r * cos(phi);
+    const float p1 = r * cospi(2.0f * u.y);
     const float s = 0.5f * (1.0f + vh.z);
-    const float p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * r * sin(phi);
+    const float p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * r * sinpi(2.0f * u.y);
     const float3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
     /* Back to the ellipsoid configuration. */
     return normalize(make_float3(alpha * nh.x, alpha * nh.y, max(1e-6f, nh.z)));

@@ -26,15 +26,15 @@ WF_INLINE void orthonormal_basis(float3 n, float3* t, float3* b) {
 WF_INLINE float2 sample_disk_concentric(float2 u) {
     const float2 o = 2.0f * u - 1.0f;
     if (o.x == 0.0f && o.y == 0.0f) return make_float2(0.0f, 0.0f);
-    float r, theta;
+    float r, theta; /* in units of pi */
     if (fabs(o.x) > fabs(o.y)) {
         r = o.x;
-        theta = (WF_PI / 4.0f) * (o.y / o.x);
+        theta = 0.25f * (o.y / o.x);
     } else {
         r = o.y;
-        theta = (WF_PI / 2.0f) - (WF_PI / 4.0f) * (o.x / o.y);
+        theta = 0.5f - 0.25f * (o.x / o.y);
     }
-    return r * make_float2(cos(theta), sin(theta));
+    return r * make_float2(cospi(theta), sinpi(theta));
 }
 
 /* A direction about +z with density cos(theta) / pi (Malley's method). */
@@ -48,8 +48,7 @@ WF_INLINE float3 sample_cosine_hemisphere(float2 u) {
 WF_INLINE float3 sample_uniform_hemisphere(float2 u) {
     const float z = u.x;
     const float r = sqrt(max(0.0f, 1.0f - z * z));
-    const float phi = 2.0f * WF_PI * u.y;
-    return make_float3(r * cos(phi), r * sin(phi), z);
+    return make_float3(r * cospi(2.0f * u.y), r * sinpi(2.0f * u.y), z);
 }
 
 /* Barycentrics (b1, b2) of a point uniform in area on a triangle. */
