@@ -149,9 +149,9 @@ def mean_and_error(a, b, block=16):
     return a.mean(), b.mean(), da.std(ddof=1) / math.sqrt(da.size)
 
 
-def render_ours(scene_path, out, width, spp, seed):
+def render_ours(scene_path, out, width, spp, seed, integrator):
     cmd = [str(REPO / "build" / "wavefront"), "render", str(scene_path), "--width", str(width), "--height",
-           str(width), "--spp", str(spp), "--seed", str(seed), "-o", str(out), "--quiet"]
+           str(width), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator, "-o", str(out), "--quiet"]
     report = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     return float(re.search(r"render ([0-9.]+) s", report).group(1))
 
@@ -163,6 +163,8 @@ def main():
     ap.add_argument("--spp", type=int, default=16)
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--variant", default="llvm_ad_rgb")
+    ap.add_argument("--integrator", default="wavefront", choices=["wavefront", "megakernel"],
+                    help="this renderer's integrator (the column named wavefront in the report)")
     ap.add_argument("--markdown")
     args = ap.parse_args()
 
@@ -182,7 +184,7 @@ def main():
 
         rows = []
         for r in range(args.rounds):
-            seconds_ours = render_ours(ours_scene, folder / "ours.exr", args.width, args.spp, r + 1)
+            seconds_ours = render_ours(ours_scene, folder / "ours.exr", args.width, args.spp, r + 1, args.integrator)
             start = time.perf_counter()
             image = np.array(mi.render(scene, spp=args.spp, seed=r + 1))
             seconds_mitsuba = time.perf_counter() - start
@@ -197,17 +199,18 @@ def main():
     lines = [f"# wavefront against Mitsuba 3 ({mi.__version__}, `{args.variant}`) on {Path(args.scene).name}", "",
              f"`{' '.join(['bench/mitsuba_compare.py'] + [a for a in __import__('sys').argv[1:]])}`: "
              f"{args.width}x{args.width}, {args.spp} spp, unlimited depth, Lambertian walls, "
-             f"{args.rounds} interleaved rounds on the same machine.", "",
+             f"{args.rounds} interleaved rounds on the same machine; ours is "
+             f"`build/wavefront render --integrator {args.integrator}`.", "",
              "## Calibration (the last round's images)", "",
-             f"- image mean: wavefront {m_ours:.5f}, Mitsuba {m_theirs:.5f}; difference "
+             f"- image mean: ours {m_ours:.5f}, Mitsuba {m_theirs:.5f}; difference "
              f"{m_ours - m_theirs:+.5f} ± {error:.5f} (standard error over 16x16 blocks), ratio "
              f"{m_ours / m_theirs:.4f}",
-             f"- per channel, wavefront / Mitsuba: {channels[0]:.4f} {channels[1]:.4f} {channels[2]:.4f}",
-             f"- left eighth of the image (the red wall): wavefront {np.round(left[0], 4).tolist()}, "
+             f"- per channel, ours / Mitsuba: {channels[0]:.4f} {channels[1]:.4f} {channels[2]:.4f}",
+             f"- left eighth of the image (the red wall): ours {np.round(left[0], 4).tolist()}, "
              f"Mitsuba {np.round(left[1], 4).tolist()}", "",
              "## Time", "",
              f"Mitsuba's first render, which JIT-compiles its kernels: {first:.2f} s.", "",
-             "| round | wavefront s | wavefront M samples/s | Mitsuba s | Mitsuba M samples/s | Mitsuba / wavefront |",
+             "| round | ours s | ours M samples/s | Mitsuba s | Mitsuba M samples/s | Mitsuba / ours |",
              "|--:|--:|--:|--:|--:|--:|"]
     for i, (a, b) in enumerate(rows):
         lines.append(f"| {i + 1} | {a:.3f} | {samples / a / 1e6:.3f} | {b:.3f} | {samples / b / 1e6:.3f} | {a / b:.2f} |")
