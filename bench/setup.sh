@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_packages.sh libembree-dev
-scripts/setup.sh
+scripts/setup.sh --tests
 if [ ! -x build/bench/wavefront_ray_bench ]; then
   echo "bench/setup.sh: Embree is installed but build/bench/wavefront_ray_bench was not built" >&2
   exit 1

@@ -2,6 +2,7 @@
 // covers finished rounds only), so the line uses its own clock.
 #include "cli/progress_line.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -17,34 +18,46 @@ std::string clock_text(double seconds) {
 
 } // namespace
 
-ProgressLine::ProgressLine(std::ostream& out, bool terminal, double period, uint64_t total_samples,
-                           double time_budget)
-    : out_(out), terminal_(terminal), period_(terminal ? 0.25 : period), total_(total_samples), budget_(time_budget),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+ProgressLine::ProgressLine(std::ostream& out, bool terminal, double period, const ProgressGoal& goal)
+    : out_(out), terminal_(terminal), period_(period), goal_(goal), start_(std::chrono::steady_clock::now()),
+      last_(start_) {
+    goal_.pixels = std::max<uint64_t>(goal_.pixels, 1);
+}
 
 void ProgressLine::update(const RenderStats& stats) {
     const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_).count() < period_) return;
+    if (!cleared_ && std::chrono::duration<double>(now - last_).count() < period_) return;
     last_ = now;
+    cleared_ = false;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double rate = elapsed > 0.0 ? stats.samples / elapsed : 0.0;
+    // Samples finished in this run, as whole samples per pixel on top of where it started.
+    const uint64_t spp = goal_.start_spp + stats.samples / goal_.pixels;
     std::ostringstream line;
-    line << std::fixed << std::setprecision(1) << "render: " << stats.samples * 1e-6 << " M samples";
-    if (total_) line << " of " << total_ * 1e-6 << " M (" << 100.0 * stats.samples / total_ << "%)";
-    line << ", " << std::setprecision(2) << (stats.closest_rays + stats.shadow_rays) / std::max(elapsed, 1e-9) * 1e-6
-         << " M rays/s, elapsed " << clock_text(elapsed);
+    line << "render: " << spp;
+    if (goal_.max_spp) line << "/" << goal_.max_spp;
+    line << " spp";
+    if (goal_.start_spp) line << " (resumed from " << goal_.start_spp << ")";
+    line << ", " << std::fixed << std::setprecision(2)
+         << (stats.closest_rays + stats.shadow_rays) / std::max(elapsed, 1e-9) * 1e-6 << " M rays/s, elapsed "
+         << clock_text(elapsed);
+    const double rate = elapsed > 0.0 ? stats.samples / elapsed : 0.0;
+    const uint64_t total = goal_.max_spp ? goal_.pixels * (goal_.max_spp - std::min(goal_.start_spp, goal_.max_spp)) : 0;
     double left = -1.0;
-    if (total_ && rate > 0.0) left = (total_ - std::min<uint64_t>(stats.samples, total_)) / rate;
-    if (budget_ > 0.0) left = left < 0.0 ? budget_ - elapsed : std::min(left, budget_ - elapsed);
+    if (total && rate > 0.0) left = (total - std::min<uint64_t>(stats.samples, total)) / rate;
+    if (goal_.time_budget > 0.0)
+        left = left < 0.0 ? goal_.time_budget - elapsed : std::min(left, goal_.time_budget - elapsed);
     if (left >= 0.0) line << ", left " << clock_text(left);
     if (relmse_) line << ", relMSE est. " << std::scientific << std::setprecision(2) << *relmse_;
     if (terminal_) out_ << "\r\33[K" << line.str() << std::flush;
     else out_ << line.str() << "\n" << std::flush;
-    shown_ = true;
+    shown_ = terminal_;
 }
 
-void ProgressLine::finish() {
-    if (terminal_ && shown_) out_ << "\r\33[K" << std::flush;
+void ProgressLine::clear() {
+    if (!shown_) return;
+    out_ << "\r\33[K" << std::flush;
+    shown_ = false;
+    cleared_ = true;
 }
 
 } // namespace wf

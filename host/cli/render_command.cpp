@@ -174,10 +174,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     metadata.seed = options.settings.seed;
     metadata.scene = options.scene;
     metadata.options = shaping;
-    const uint64_t pixels = uint64_t{size.width} * size.height;
-    ProgressLine progress_line(log, terminal, 10.0,
-                               progress.max_spp ? pixels * (progress.max_spp - progress.start_spp) : 0,
-                               progress.time_budget);
+    const ProgressGoal goal{uint64_t{size.width} * size.height, progress.start_spp, progress.max_spp,
+                            progress.time_budget};
+    ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, goal);
     if (!options.quiet) renderer.on_progress([&](const RenderStats& s) { progress_line.update(s); });
     const std::string partial_path = partial_render_path(options.output);
     bool partial_written = false;
@@ -190,6 +189,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     auto last_checkpoint = std::chrono::steady_clock::now();
     CheckpointLog checkpoints(out, options.report_csv);
     const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
+        progress_line.clear(); // stdout and stderr may share the terminal
         checkpoints.add(c);
         if (c.relmse_estimate) progress_line.set_error(*c.relmse_estimate);
         const auto now = std::chrono::steady_clock::now();
@@ -199,7 +199,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
             last_checkpoint = now;
         }
     });
-    progress_line.finish();
+    progress_line.clear();
 
     RenderSummary summary = renderer.summary();
     summary.interrupted_by = interrupt_signal();

@@ -127,9 +127,14 @@ EnvironmentMap constant_environment(float radiance) {
 }
 
 void light_unlit_scene(Scene& scene) {
-    if (scene.environment || scene.has_punctual_light() || scene.has_emissive_triangles()) return;
+    if (scene.environment || scene.has_punctual_light()) return;
+    std::string why;
+    if (!scene.has_emissive_triangles()) why = "the scene has no light";
+    else if (scene.emits_only_through_textures()) why = "the scene's only light is emission from textures";
+    else return;
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
-    scene.warnings.push_back("the scene has no light; lit by a uniform white environment of radiance 1");
+    scene.warnings.push_back(why + "; lit by a uniform white environment of radiance 1 (--env or --env-uniform L "
+                                   "to choose another)");
 }
 
 } // namespace wf

@@ -42,8 +42,9 @@ EnvironmentMap make_environment(const Image& image, float scale, float rotate_de
 EnvironmentMap constant_environment(float radiance = 1.0f);
 
 // A scene with no light at all (no emissive triangle, no punctual light, no
-// environment) gets the uniform white environment of radiance 1 and a
-// warning saying so, so that every asset renders something sensible.
+// environment), or whose only light is emission from textures, gets the
+// uniform white environment of radiance 1 and a warning saying so, so that
+// every asset renders something sensible.
 void light_unlit_scene(Scene& scene);
 
 } // namespace wf

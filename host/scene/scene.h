@@ -101,6 +101,18 @@ struct Scene {
             if (materials[material].emits()) return true;
         return false;
     }
+    // Whether every triangle that emits takes its emission from a texture:
+    // glowing details (DamagedHelmet's, ToyCar's), which light nothing else.
+    bool emits_only_through_textures() const {
+        bool any = false;
+        for (uint32_t material : triangle_material) {
+            const SceneMaterial& m = materials[material];
+            if (!m.emits()) continue;
+            if (m.textures[WF_TEXTURE_EMISSIVE].texture < 0) return false;
+            any = true;
+        }
+        return any;
+    }
     bool has_punctual_light() const {
         for (const PunctualLight& light : punctual_lights)
             if (light.intensity[0] > 0.0f || light.intensity[1] > 0.0f || light.intensity[2] > 0.0f) return true;

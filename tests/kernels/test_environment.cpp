@@ -1,8 +1,8 @@
 // test_environment.cpp — the environment light (kernels/lights/environment.h,
 // host/scene/environment_map.h): its sampler against its own density by a
 // chi-square test, the density's normalisation, a constant map, an irradiance
-// estimate against exact quadrature, the device against the host, and the
-// files it must refuse.
+// estimate against exact quadrature, the device against the host, the files
+// it must refuse, and when a scene gets the default environment.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -395,6 +395,39 @@ namespace {
 // The Environment struct, passed by value to kernels, has the same layout on
 // the device (with every other shared struct).
 TEST(EnvironmentDevice, SharedLayoutsAgree) { EXPECT_NO_THROW(check_shared_layouts(test::cpu_device())); }
+
+// A scene is lit by the default environment when it has no light, or when its
+// only light is emission from textures (glowing details, as DamagedHelmet's),
+// and says why; an untextured emitter or a punctual light keeps it dark.
+TEST(DefaultLight, OnlyForScenesWithoutALightOrLitByTexturesAlone) {
+    auto scene_with = [](bool emits, bool textured, bool punctual) {
+        Scene scene;
+        SceneMaterial m;
+        if (emits) m.emission = glm::vec3(2.0f);
+        if (textured) m.textures[WF_TEXTURE_EMISSIVE].texture = 0;
+        scene.materials = {m};
+        scene.triangle_material = {0};
+        if (punctual) {
+            scene.punctual_lights.emplace_back();
+            scene.punctual_lights.back().intensity[0] = 1.0f;
+        }
+        light_unlit_scene(scene);
+        return scene;
+    };
+    const Scene unlit = scene_with(false, false, false);
+    ASSERT_TRUE(unlit.environment);
+    ASSERT_EQ(unlit.warnings.size(), 1u);
+    EXPECT_NE(unlit.warnings[0].find("has no light"), std::string::npos);
+
+    const Scene textured = scene_with(true, true, false);
+    ASSERT_TRUE(textured.environment);
+    ASSERT_EQ(textured.warnings.size(), 1u);
+    EXPECT_NE(textured.warnings[0].find("emission from textures"), std::string::npos) << textured.warnings[0];
+
+    EXPECT_FALSE(scene_with(true, false, false).environment);
+    EXPECT_FALSE(scene_with(true, true, true).environment);
+    EXPECT_FALSE(scene_with(false, false, true).environment);
+}
 
 } // namespace
 } // namespace wf

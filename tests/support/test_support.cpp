@@ -1,7 +1,9 @@
 // test_support.cpp — see test_support.h.
 #include "support/test_support.h"
 
+#include <pty.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "device/kernel_program.h"
 
@@ -94,6 +96,25 @@ ProcessResult run_wavefront(const std::string& args, const std::string& scratch_
     const std::string command = std::string("'") + WF_BINARY + "' " + args + " > '" + out + "' 2> '" + err + "'";
     const int status = std::system(command.c_str());
     return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+}
+
+ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir) {
+    const std::string command = "cd '" + scratch_dir + "' && exec '" + WF_BINARY + "' " + args;
+    int terminal = -1;
+    const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+    if (child < 0) throw std::runtime_error("forkpty failed");
+    if (child == 0) {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ProcessResult result;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) result.out.append(buffer, size_t(n));
+    ::close(terminal); // read() fails with EIO once the child has closed its side
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
 }
 
 // ---------------------------------------------------------------------------

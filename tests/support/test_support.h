@@ -64,6 +64,10 @@ struct ProcessResult {
 // capturing its output in files under `scratch_dir`.
 ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir);
 
+// The same, with stdout and stderr both on one pseudo-terminal, as a user at a
+// terminal sees them: `out` holds what the terminal received, `err` is empty.
+ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir);
+
 // ---------------------------------------------------------------------------
 // Added for test_stability.cpp.
 
