@@ -3,6 +3,7 @@
 // scene, the reference, the output format) is rejected before rendering.
 #include "cli/render_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -14,6 +15,8 @@
 
 #include "scene/environment_map.h"
 #include "base/errors.h"
+#include "base/file_fingerprint.h"
+#include "base/output_files.h"
 #include "gltf/gltf_loader.h"
 #include "image/image_io.h"
 #include "cli/interrupt.h"
@@ -28,6 +31,13 @@ namespace wf {
 namespace {
 
 std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
+
+// The scene's absolute path without links or dot segments, for metadata.
+std::string canonical_path(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : canonical.string();
+}
 
 // One checkpoint as a table row and a CSV line; error columns stay empty
 // without a reference.
@@ -70,7 +80,8 @@ private:
 // pool size, all the others.
 ImageOptions image_options(const RenderOptions& o, ImageSize size, std::optional<uint32_t> pool_size) {
     const RenderSettings& s = o.settings;
-    ImageOptions options = {{"scene", o.scene},
+    ImageOptions options = {{"scene", canonical_path(o.scene)},
+            {"scene-contents", file_fingerprint(o.scene)},
             {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
             {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
             {"seed", std::to_string(s.seed)},
@@ -86,6 +97,24 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size, std::optional
             {"version", WF_VERSION}};
     if (pool_size) options.emplace_back("pool-size", std::to_string(*pool_size));
     return options;
+}
+
+// What a partial render must share with this one to go on: every option but
+// the scene's path, since the scene's contents decide wherever it now lies.
+ImageOptions resume_checks(ImageOptions options) {
+    options.erase(std::remove_if(options.begin(), options.end(), [](const auto& o) { return o.first == "scene"; }),
+                  options.end());
+    return options;
+}
+
+// Every file the render may write, checked before any work starts: the
+// image, the partial render that Ctrl-C or --checkpoint-every writes beside
+// it, the CSV report and the statistics.
+void check_outputs(const RenderOptions& o) {
+    check_can_write(o.output);
+    check_can_write_file(partial_render_path(o.output));
+    if (!o.report_csv.empty()) check_can_write_file(o.report_csv);
+    if (!o.stats_json.empty()) check_can_write_file(o.stats_json);
 }
 
 std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
@@ -114,7 +143,7 @@ std::string cache_directory(const std::string& requested) {
 
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
     const auto start = std::chrono::steady_clock::now();
-    check_can_write(options.output);
+    check_outputs(options);
     Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
     if (!options.environment.empty()) {
         auto map = std::make_shared<EnvironmentMap>(
@@ -137,7 +166,11 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     std::optional<PartialRender> resumed;
     if (!options.resume.empty()) {
         resumed = read_partial_render(options.resume);
-        check_partial_options(*resumed, options.resume, image_options(options, size, std::nullopt));
+        check_partial_options(*resumed, options.resume, resume_checks(image_options(options, size, std::nullopt)));
+        const uint32_t held = resolve(resumed->film).min_samples;
+        if (options.progress.max_spp && options.progress.max_spp <= held)
+            throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
+                             " already holds " + std::to_string(held) + " spp; ask for more to go on");
     }
     if (options.settings.bounce_layers && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
@@ -162,7 +195,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
     const ImageOptions shaping = image_options(options, size, renderer.stats().pool_size);
-    if (resumed) check_partial_options(*resumed, options.resume, shaping);
+    if (resumed) check_partial_options(*resumed, options.resume, resume_checks(shaping));
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;
@@ -172,7 +205,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     ImageMetadata metadata;
     metadata.device = device.info.name;
     metadata.seed = options.settings.seed;
-    metadata.scene = options.scene;
+    metadata.scene = canonical_path(options.scene);
     metadata.options = shaping;
     const ProgressGoal goal{uint64_t{size.width} * size.height, progress.start_spp, progress.max_spp,
                             progress.time_budget};
@@ -203,17 +236,28 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
 
     RenderSummary summary = renderer.summary();
     summary.interrupted_by = interrupt_signal();
+    summary.spp = film.min_samples;
+    summary.resumed_from_spp = progress.start_spp;
     metadata.samples_per_pixel = film.min_samples;
     metadata.render_seconds = summary.stats.seconds;
     metadata.interrupted = summary.interrupted_by != 0;
-    write_image(options.output, film.mean, metadata, bounce_layers(film));
-    if (summary.interrupted_by) {
+    // Stopped before a sample finished: what is on disk (an older image, the
+    // partial it resumed from) is worth more than nothing, so nothing is written.
+    const bool computed = summary.stats.samples > 0;
+    if (summary.interrupted_by && !computed) {
+        log << "interrupted before any sample finished: nothing written\n";
+    } else {
+        write_image(options.output, film.mean, metadata, bounce_layers(film));
+    }
+    std::error_code ignored;
+    if (summary.interrupted_by && computed) {
         write_partial();
         log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and " << partial_path
             << "; go on with --resume " << partial_path << "\n";
-    } else if (partial_written) {
-        std::error_code ignored; // stale now that the image is whole
-        std::filesystem::remove(partial_path, ignored);
+    } else if (!summary.interrupted_by) {
+        // The image is whole: the partial it was checkpointed to, or resumed from, is stale.
+        if (partial_written || (resumed && std::filesystem::equivalent(options.resume, partial_path, ignored)))
+            std::filesystem::remove(partial_path, ignored);
     }
 
     summary.scene = options.scene;

@@ -46,9 +46,10 @@ void check_partial_options(const PartialRender& partial, const std::string& path
         const auto it = std::find_if(partial.options.begin(), partial.options.end(),
                                      [&name = name](const auto& o) { return o.first == name; });
         const std::string found = it == partial.options.end() ? "nothing" : "'" + it->second + "'";
-        if (it == partial.options.end() || it->second != value)
-            throw InputError(path + ": was rendered with " + name + " " + found + ", this render has '" + value +
-                             "'");
+        if (it != partial.options.end() && it->second == value) continue;
+        if (name == "scene-contents")
+            throw InputError(path + ": was rendered from another scene (the scene file's contents differ)");
+        throw InputError(path + ": was rendered with " + name + " " + found + ", this render has '" + value + "'");
     }
 }
 

@@ -6,14 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
-#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 
 #include "base/errors.h"
+#include "base/output_files.h"
 
 namespace wf {
 
@@ -32,13 +31,7 @@ bool stores_linear_float(const std::string& format) {
 void check_can_write(const std::string& path) {
     if (!OIIO::ImageOutput::create(path))
         throw InputError(path + ": no image format for this extension (" + OIIO::geterror() + ")");
-    const std::filesystem::path target(path);
-    const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-    std::error_code ec;
-    if (!std::filesystem::is_directory(folder, ec)) throw InputError(path + ": no such folder " + folder.string());
-    const std::filesystem::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
-    if (!std::ofstream(probe)) throw InputError(path + ": cannot write in " + folder.string());
-    std::filesystem::remove(probe, ec);
+    check_can_write_file(path);
 }
 
 bool holds_float_radiance(const std::string& path) {
@@ -91,20 +84,16 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
         }
     if (!float_format)
         for (float& v : pixels) v = srgb_encode(v);
-    // Beside the target, with its extension (OIIO picks the format by it), then renamed over it.
-    const std::filesystem::path target(path);
-    const std::filesystem::path temporary =
-        target.parent_path() / ("." + target.stem().string() + ".writing-" + std::to_string(::getpid()) +
-                                target.extension().string());
-    if (!out->open(temporary.string(), spec)) throw InputError(path + ": cannot write (" + out->geterror() + ")");
-    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
-    const bool closed = out->close();
-    std::error_code error;
-    if (written && closed) std::filesystem::rename(temporary, target, error);
-    if (!written || !closed || error) {
-        std::filesystem::remove(temporary, error);
-        throw InputError(path + ": write failed (" + (written && closed ? "cannot rename the written file" : out->geterror()) + ")");
+    const std::filesystem::path temporary = temporary_beside(path);
+    bool written = out->open(temporary.string(), spec);
+    written = written && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+    written = out->close() && written;
+    if (!written) {
+        std::error_code ignored; // a failed open may still have created it
+        std::filesystem::remove(temporary, ignored);
+        throw InputError(path + ": write failed (" + out->geterror() + ")");
     }
+    replace_with(temporary, path);
 }
 
 ChannelImage read_channels(const std::string& path) {

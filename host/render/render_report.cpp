@@ -26,7 +26,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
         << (s.environment ? "an environment" : "no environment") << "\n";
     out << "features   " << s.features << "\n";
     out << "device     " << s.device << "\n";
-    out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp -> " << s.output << "\n";
+    out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp";
+    if (s.resumed_from_spp) out << " (resumed from " << s.resumed_from_spp << ")";
+    out << " -> " << s.output << "\n";
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes
         << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s"
         << (s.kernels_from_cache ? " (from cache)" : "") << ", render "

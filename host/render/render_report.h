@@ -28,6 +28,7 @@ struct RenderSummary {
     int bvh_depth = 0;
     std::string device;
     uint32_t width = 0, height = 0, spp = 0;
+    uint32_t resumed_from_spp = 0; // the samples per pixel of the partial render it went on from; 0: none
     size_t device_bytes = 0;
     QueuePush queue_push = QueuePush::Group;
     uint32_t local_size = 0;

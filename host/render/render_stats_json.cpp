@@ -1,11 +1,9 @@
 // render_stats_json.cpp — field names follow the closing report's words.
 #include "render/render_stats_json.h"
 
-#include <fstream>
-
 #include <nlohmann/json.hpp>
 
-#include "base/errors.h"
+#include "base/output_files.h"
 #include "integrator/path_pool.h"
 
 namespace wf {
@@ -20,6 +18,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["width"] = s.width;
     j["height"] = s.height;
     j["spp"] = s.spp;
+    j["resumed_from_spp"] = s.resumed_from_spp;
     j["integrator"] = integrator_name(st.integrator);
     j["schedule"] = st.integrator == Integrator::Megakernel ? "none" : schedule_name(st.schedule);
     j["pool_size"] = st.pool_size;
@@ -58,9 +57,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["counter_read_columns"] = {"regenerate", "extend", "shadow", "continue", "finished",
                                  "closest_rays", "shadow_rays", "samples"};
     j["counter_reads"] = reads;
-    std::ofstream out(path);
-    out << j.dump(1) << "\n";
-    if (!out) throw InputError(path + ": cannot write the statistics");
+    write_file_atomically(path, j.dump(1) + "\n");
 }
 
 } // namespace wf

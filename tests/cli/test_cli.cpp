@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <OpenImageIO/imageio.h>
@@ -158,6 +159,37 @@ TEST_F(Cli, HostilePathsAreNamedAndLeaveNoOutput) {
           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
     expect_rejected("render " + path("scene/escape.gltf") + " -o " + path("escape.png"), "outside the scene's folder");
     EXPECT_FALSE(fs::exists(path("escape.png")));
+}
+
+// Every file a render would write is checked before any work: a folder where
+// the file should be, a missing folder, a read-only file, for the image, the
+// partial render beside it, the CSV report and the statistics. Nothing is
+// created, and no temporary is left behind.
+TEST_F(Cli, EveryOutputPathIsCheckedBeforeRendering) {
+    const std::string small = "render " + kCornell + " --width 16 --spp 1 ";
+    for (const char* folder : {"taken.exr", "out.exr.partial.exr", "report.csv", "stats.json"})
+        fs::create_directories(dir_ / folder);
+    write("stdout.txt", "");
+    write("stderr.txt", "");
+    auto listing = [&] {
+        std::set<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) names.insert(entry.path().filename().string());
+        return names;
+    };
+    const std::set<std::string> before = listing();
+    expect_rejected(small + "-o " + path("taken.exr"), "taken.exr: is a folder");
+    expect_rejected(small + "-o " + path("out.exr"), "out.exr.partial.exr: is a folder");
+    expect_rejected(small + "-o " + path("a.exr") + " --report " + path("report.csv"), "report.csv: is a folder");
+    expect_rejected(small + "-o " + path("a.exr") + " --stats-json " + path("stats.json"), "stats.json: is a folder");
+    expect_rejected(small + "-o " + path("a.exr") + " --stats-json " + path("none/stats.json"), "none/stats.json");
+    expect_rejected(small + "-o " + path("a.exr") + " --report " + path("none/r.csv"), "none/r.csv");
+    if (::geteuid() != 0) { // root writes through any file mode
+        write("locked.exr", "old");
+        fs::permissions(dir_ / "locked.exr", fs::perms::owner_read);
+        expect_rejected(small + "-o " + path("locked.exr"), "locked.exr: the file there is read-only");
+    }
+    if (::geteuid() != 0) fs::remove(dir_ / "locked.exr");
+    EXPECT_EQ(listing(), before); // nothing made, no temporary left
 }
 
 TEST_F(Cli, ReportsErrorAgainstTimeAsCsv) {

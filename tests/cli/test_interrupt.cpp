@@ -1,14 +1,18 @@
 // test_interrupt.cpp — long renders as a user lives with them: Ctrl-C and
 // SIGTERM write what was computed and exit 128 + signal; --checkpoint-every
 // keeps a partial render on disk while it runs; --resume goes on from one to
-// the bytes of a render never stopped, and refuses one made with other options.
+// the bytes of a render never stopped, and refuses one made with other options
+// or from another scene; a stop before any sample replaces nothing.
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <thread>
+#include <fstream>
 #include <vector>
 
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -157,6 +161,88 @@ TEST_F(Interrupt, ASecondSignalEndsAtOnce) {
     const int status = wait_for(pid);
     EXPECT_TRUE(status == 128 + SIGINT || status == 128 + SIGTERM) << "exit " << status;
     EXPECT_FALSE(fs::exists(output)) << "the clean stop went on after the second signal";
+}
+
+// --resume asks for more samples than the partial holds, finds the scene by
+// its contents wherever it now lies, refuses an edited one, says where it went
+// on from, and removes the partial once the image is whole.
+TEST_F(Interrupt, ResumeGoesOnFromTheSameSceneAndCleansUp) {
+    const std::string stopped = path("stopped.exr"), partial = partial_render_path(stopped);
+    std::vector<std::string> args = render_args(stopped, 1u << 20);
+    args.insert(args.end(), {"--checkpoint-every", "0.2"});
+    const pid_t pid = start(args);
+    ASSERT_TRUE(appears(partial)) << "no checkpoint while rendering";
+    ::kill(pid, SIGINT);
+    ASSERT_EQ(wait_for(pid), 128 + SIGINT);
+    const PartialRender p = read_partial_render(partial);
+    const uint32_t held = *std::min_element(p.film.samples.begin(), p.film.samples.end());
+
+    auto resume_args = [&](const std::string& scene, uint32_t spp) {
+        std::vector<std::string> a = render_args(stopped, spp);
+        a[0] = scene;
+        a.insert(a.end(), {"--resume", partial});
+        return a;
+    };
+    EXPECT_EQ(wait_for(start(resume_args(kCornell, held))), 2);
+    EXPECT_NE(test::read_file(path("stderr.txt")).find("already holds " + std::to_string(held) + " spp"),
+              std::string::npos)
+        << test::read_file(path("stderr.txt"));
+
+    std::string edited = test::read_file(kCornell);
+    edited.replace(edited.find("\"asset\""), 7, "\"extras\":{},\"asset\"");
+    std::ofstream(path("edited.gltf")) << edited;
+    EXPECT_EQ(wait_for(start(resume_args(path("edited.gltf"), held + 4))), 2);
+    EXPECT_NE(test::read_file(path("stderr.txt")).find("was rendered from another scene"), std::string::npos)
+        << test::read_file(path("stderr.txt"));
+
+    fs::copy_file(kCornell, path("moved.gltf"));
+    std::vector<std::string> moved = resume_args(path("moved.gltf"), held + 4);
+    moved.erase(std::find(moved.begin(), moved.end(), "--quiet"));
+    ASSERT_EQ(wait_for(start(moved)), 0) << test::read_file(path("stderr.txt"));
+    EXPECT_NE(test::read_file(path("stdout.txt")).find(std::to_string(held + 4) + " spp (resumed from " +
+                                                       std::to_string(held) + ")"),
+              std::string::npos)
+        << test::read_file(path("stdout.txt"));
+    EXPECT_FALSE(fs::exists(partial)) << "the partial outlived the whole image";
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().filename().string().find(".writing-"), std::string::npos) << entry.path();
+}
+
+// A signal before any sample finished (here, while the kernels compile into an
+// empty cache) writes nothing: the image already there stays as it was.
+TEST_F(Interrupt, AStopBeforeAnySampleReplacesNothing) {
+    const std::string output = path("kept.exr");
+    std::ofstream(output) << "an earlier render";
+    std::vector<std::string> args = render_args(output, 64);
+    args.erase(std::find(args.begin(), args.end(), "--quiet"));
+    std::string command = std::string("exec '") + WF_BINARY + "' render";
+    for (const std::string& a : args) command += " '" + a + "'";
+    // On a terminal it says when it starts building; its handlers are in place by then.
+    int terminal = -1;
+    const pid_t pid = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    std::string seen;
+    char buffer[4096];
+    bool signalled = false;
+    for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) {
+        seen.append(buffer, size_t(n));
+        if (!signalled && seen.find("building the render") != std::string::npos) {
+            ::kill(pid, SIGINT);
+            signalled = true;
+        }
+    }
+    ::close(terminal);
+    ASSERT_TRUE(signalled) << seen;
+    EXPECT_EQ(wait_for(pid), 128 + SIGINT) << seen;
+    EXPECT_NE(seen.find("interrupted before any sample finished: nothing written"), std::string::npos) << seen;
+    EXPECT_EQ(test::read_file(output), "an earlier render");
+    EXPECT_FALSE(fs::exists(partial_render_path(output)));
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().filename().string().find(".writing-"), std::string::npos) << entry.path();
 }
 
 TEST_F(Interrupt, AFinishedRenderLeavesNoPartialFile) {
