@@ -21,10 +21,23 @@ float srgb_encode(float linear) {
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+float srgb_decode(float encoded) {
+    const float x = std::clamp(encoded, 0.0f, 1.0f);
+    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
 namespace {
 // Formats that keep radiance as floats; everything else is display-referred 8-bit.
 bool stores_linear_float(const std::string& format) {
     return format == "openexr" || format == "hdr" || format == "tiff";
+}
+
+// Whether a file's values are display-encoded (what our 8-bit outputs and
+// most PNGs and JPEGs hold): integer pixels, unless the file says linear.
+bool holds_srgb(const OIIO::ImageSpec& spec) {
+    const std::string space = spec.get_string_attribute("oiio:ColorSpace");
+    if (space == "Linear" || space == "linear") return false;
+    return !spec.format.is_floating_point();
 }
 } // namespace
 
@@ -48,6 +61,8 @@ Image read_image(const std::string& path) {
     image.rgb.resize(size_t{image.width} * image.height * 3);
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
         throw InputError(path + ": cannot read (" + in->geterror() + ")");
+    if (holds_srgb(spec))
+        for (float& v : image.rgb) v = srgb_decode(v);
     return image;
 }
 
@@ -66,12 +81,18 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
         for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.name + "." + c);
     spec.attribute("oiio:ColorSpace", float_format ? "Linear" : "sRGB");
     spec.attribute("Software", "wavefront " WF_VERSION);
-    spec.attribute("wavefront:samplesPerPixel", static_cast<int>(metadata.samples_per_pixel));
-    spec.attribute("wavefront:renderTimeSeconds", static_cast<float>(metadata.render_seconds));
+    // Numbers as numbers where the format keeps them (EXR); 8-bit writers (PNG
+    // text chunks, JPEG comments) keep strings alone and drop the rest.
+    auto number = [&](const char* name, auto value) {
+        if (float_format) spec.attribute(name, value);
+        else spec.attribute(name, std::to_string(value));
+    };
+    number("wavefront:samplesPerPixel", static_cast<int>(metadata.samples_per_pixel));
+    number("wavefront:renderTimeSeconds", static_cast<float>(metadata.render_seconds));
     spec.attribute("wavefront:device", metadata.device);
-    spec.attribute("wavefront:seed", static_cast<int>(metadata.seed));
+    number("wavefront:seed", static_cast<int>(metadata.seed));
     spec.attribute("wavefront:scene", metadata.scene);
-    spec.attribute("wavefront:interrupted", metadata.interrupted ? 1 : 0);
+    number("wavefront:interrupted", metadata.interrupted ? 1 : 0);
     for (const auto& [name, value] : metadata.options) spec.attribute("wavefront:option:" + name, value);
 
     // Interleaved: RGB, then each layer's RGB, pixel by pixel.

@@ -3,7 +3,8 @@
 // sRGB-encoded 8-bit for .png, .jpg and other 8-bit formats; it writes a
 // temporary file beside the target and renames it, so a crash or a full disk
 // never leaves a torn image. Reading takes the first three channels as linear
-// floats (references for error reports), or every channel by name.
+// floats (references for error reports; 8-bit sRGB files are decoded to
+// linear), or every channel by name.
 #pragma once
 
 #include <string>
@@ -59,5 +60,7 @@ ChannelImage read_channels(const std::string& path);
 
 // The sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1].
 float srgb_encode(float linear);
+// Its inverse: the linear value of an encoded one in [0, 1].
+float srgb_decode(float encoded);
 
 } // namespace wf

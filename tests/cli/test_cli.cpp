@@ -114,6 +114,12 @@ TEST_F(Cli, RendersPngAndExrWithMetadata) {
     ASSERT_TRUE(in);
     EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
     EXPECT_EQ(in->spec().width, 32);
+    // 8-bit writers keep strings alone: the numbers are written as text.
+    EXPECT_EQ(in->spec().get_string_attribute("wavefront:samplesPerPixel"), "2");
+    EXPECT_EQ(in->spec().get_string_attribute("wavefront:seed"), "0");
+    EXPECT_EQ(in->spec().get_string_attribute("wavefront:interrupted"), "0");
+    EXPECT_GT(std::stod(in->spec().get_string_attribute("wavefront:renderTimeSeconds", "0")), 0.0);
+    EXPECT_EQ(in->spec().get_string_attribute("wavefront:option:size"), "32x32");
     in = OIIO::ImageInput::open(path("cornell.exr"));
     ASSERT_TRUE(in);
     const OIIO::ImageSpec& spec = in->spec();
@@ -133,6 +139,24 @@ TEST_F(Cli, RendersPngAndExrWithMetadata) {
 // Files from anywhere, written to anywhere: odd names work, and every place
 // that cannot work is named in one line, exit 2, before any rendering and
 // with no output file left behind.
+// A reference in an 8-bit format holds sRGB-encoded values: it is decoded to
+// linear before the comparison, so a render against its own PNG shows only
+// the 8-bit rounding, where comparing encoded values as if linear would not.
+TEST_F(Cli, An8BitReferenceIsComparedAsLinear) {
+    const std::string small = "render " + kCornell + " --width 32 --spp 4 --seed 3 ";
+    ASSERT_EQ(run(small + "-o " + path("ref.png")).exit_code, 0);
+    ASSERT_EQ(run(small + "-o " + path("ref.exr")).exit_code, 0);
+    const Image linear = read_image(path("ref.exr")), decoded = read_image(path("ref.png"));
+    ASSERT_EQ(linear.rgb.size(), decoded.rgb.size());
+    for (size_t i = 0; i < linear.rgb.size(); ++i) {
+        const float expected = std::min(linear.rgb[i], 1.0f);
+        ASSERT_NEAR(decoded.rgb[i], expected, 0.5f / 255.0f * 3.0f + 0.01f * expected) << i;
+    }
+    const test::ProcessResult r = run(small + "--reference " + path("ref.png") + " -o " + path("again.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("relmse"), std::string::npos);
+}
+
 TEST_F(Cli, HostilePathsAreNamedAndLeaveNoOutput) {
     const fs::path odd = dir_ / "a folder with spaces and ünïcödé";
     fs::create_directories(odd);
