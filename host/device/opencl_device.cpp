@@ -2,6 +2,11 @@
 #include "device/opencl_device.h"
 
 #include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include "base/errors.h"
 
@@ -20,6 +25,32 @@ bool is_index(const std::string& s) {
     for (char c : s)
         if (!std::isdigit(static_cast<unsigned char>(c))) return false;
     return true;
+}
+
+// PoCL offers no device when it cannot create its kernel cache (an unwritable
+// or missing HOME, say), which would otherwise read as a broken driver. Its
+// folder, as PoCL chooses it: POCL_CACHE_DIR, else $XDG_CACHE_HOME/pocl, else
+// $HOME/.cache/pocl. Empty when that folder can be made and written.
+std::string pocl_cache_problem() {
+    namespace fs = std::filesystem;
+    const char* pocl = std::getenv("POCL_CACHE_DIR");
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    fs::path folder;
+    std::string from;
+    if (pocl && *pocl) folder = pocl, from = "POCL_CACHE_DIR";
+    else if (xdg && *xdg) folder = fs::path(xdg) / "pocl", from = "XDG_CACHE_HOME";
+    else if (home && *home) folder = fs::path(home) / ".cache" / "pocl", from = "HOME";
+    else return "";
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    const fs::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
+    if (!ec && std::ofstream(probe)) {
+        fs::remove(probe, ec);
+        return "";
+    }
+    return "PoCL cannot create its kernel cache in " + folder.string() + " (from " + from +
+           "), so it offers no device: set POCL_CACHE_DIR to a writable folder";
 }
 
 } // namespace
@@ -57,8 +88,12 @@ std::vector<DeviceInfo> list_devices() {
             result.push_back(info);
         }
     }
-    if (result.empty())
+    if (result.empty()) {
+        for (const cl::Platform& platform : platforms)
+            if (platform.getInfo<CL_PLATFORM_NAME>() == "Portable Computing Language")
+                if (const std::string problem = pocl_cache_problem(); !problem.empty()) throw DeviceError(problem);
         throw DeviceError("OpenCL platforms found, but no device: check the driver installation");
+    }
     return result;
 }
 

@@ -1,6 +1,7 @@
 // test_cli.cpp — the `wavefront` executable as a user meets it: exit codes,
 // one-line errors that name the thing at fault, and the files it writes.
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,6 +74,20 @@ TEST_F(Cli, DevicesListsTheCpu) {
     const test::ProcessResult r = run("devices");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("type cpu"), std::string::npos) << r.out;
+}
+
+// PoCL offers no device when it cannot make its kernel cache: the error says
+// so, instead of blaming the driver.
+TEST_F(Cli, AnUnwritableHomeIsNamedNotABrokenDriver) {
+    const std::string err = path("stderr.txt");
+    const std::string command = std::string("env -u XDG_CACHE_HOME -u POCL_CACHE_DIR HOME=/dev/null '") + WF_BINARY +
+                                "' devices 2> '" + err + "' > /dev/null";
+    const int status = std::system(command.c_str());
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1);
+    const std::string text = test::read_file(err);
+    EXPECT_NE(text.find("PoCL cannot create its kernel cache in /dev/null/.cache/pocl (from HOME)"), std::string::npos)
+        << text;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
 }
 
 TEST_F(Cli, BadFlagsAreRejectedByName) {
