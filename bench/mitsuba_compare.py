@@ -34,7 +34,6 @@ import argparse
 import base64
 import json
 import math
-import re
 import statistics
 import struct
 import subprocess
@@ -150,10 +149,12 @@ def mean_and_error(a, b, block=16):
 
 
 def render_ours(scene_path, out, width, spp, seed, integrator):
+    stats = Path(out).with_suffix(".json")
     cmd = [str(REPO / "build" / "wavefront"), "render", str(scene_path), "--width", str(width), "--height",
-           str(width), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator, "-o", str(out), "--quiet"]
-    report = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    return float(re.search(r"render ([0-9.]+) s", report).group(1))
+           str(width), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator, "-o", str(out), "--quiet",
+           "--stats-json", str(stats)]
+    subprocess.run(cmd, check=True)
+    return float(json.loads(stats.read_text())["times"]["render"])
 
 
 def main():

@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(cmake g++ pkg-config pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libglm-dev
-          libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libgtest-dev python3
+          libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev python3
           python3-matplotlib python3-numpy "$@")
 missing=()
 for p in "${packages[@]}"; do

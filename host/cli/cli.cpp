@@ -1,12 +1,17 @@
-// cli.cpp — flags are declared with OpenImageIO's ArgParse (a dependency
-// already), stored as text, then converted with range checks of our own so that
-// "--spp abc" or "--spp 0" is an error rather than a silent zero.
+// cli.cpp — the command line, declared with CLI11: each flag once, with its
+// help, its default (read from the variable it fills) and its check (a range
+// or a list of choices), so that `--help`, the defaults and the errors cannot
+// disagree. `--opt value` and `--opt=value` both work, and `render --config
+// FILE` reads any flag from a TOML file. A CLI11 error becomes an InputError
+// whose one line names the command and the flag.
 #include "cli/cli.h"
 
-#include <charconv>
+#include <cctype>
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
-#include <OpenImageIO/argparse.h>
+#include <CLI/CLI.hpp>
 
 #include "base/errors.h"
 #include "scene/camera.h"
@@ -14,230 +19,366 @@
 namespace wf {
 namespace {
 
-uint32_t parse_count(const std::string& flag, const std::string& text, uint64_t lo, uint64_t hi) {
-    uint64_t value = 0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (text.empty() || ec != std::errc() || ptr != end)
-        throw InputError(flag + " " + text + ": expected a whole number");
-    if (value < lo || value > hi)
-        throw InputError(flag + " " + text + ": must be between " + std::to_string(lo) + " and " +
-                         std::to_string(hi));
-    return static_cast<uint32_t>(value);
+constexpr uint32_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
+
+// A whole number in [lo, hi], checked on the text so that "abc" and "-5" are
+// named as such rather than converted to something else.
+CLI::Validator whole_number(uint64_t lo, uint64_t hi) {
+    const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+    return CLI::Validator(
+        [lo, hi, range](std::string& text) -> std::string {
+            if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+                return "'" + text + "' is not a whole number";
+            if (text.size() > 12 || std::stoull(text) < lo || std::stoull(text) > hi)
+                return text + " is not in " + range;
+            return "";
+        },
+        "in " + range);
 }
 
-double parse_finite(const std::string& flag, const std::string& text) {
-    double value = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
-        throw InputError(flag + " " + text + ": expected a number");
-    return value;
+// A finite number; `positive`: above zero.
+CLI::Validator finite_number(bool positive) {
+    return CLI::Validator(
+        [positive](std::string& text) -> std::string {
+            std::istringstream in(text);
+            double value = 0.0;
+            if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
+            if (positive && !(value > 0.0)) return text + " is not above 0";
+            return "";
+        },
+        positive ? "> 0" : "");
 }
 
-double parse_positive(const std::string& flag, const std::string& text) {
-    const double value = parse_finite(flag, text);
-    if (!(value > 0.0)) throw InputError(flag + " " + text + ": expected a positive number");
-    return value;
+// The names of a choice (render_settings.h) as CLI11's list of allowed values.
+std::vector<std::string> names_of(const ChoiceNames& names) {
+    std::vector<std::string> list;
+    for (const char* n : names)
+        if (n) list.emplace_back(n);
+    return list;
 }
 
-// The index of `text` among a choice's names (render_settings.h), which are
-// listed in the error otherwise.
-uint32_t parse_choice(const std::string& flag, const std::string& text, const ChoiceNames& names) {
-    std::string listed;
-    for (uint32_t i = 0; i < names.size() && names[i]; ++i) {
-        if (text == names[i]) return i;
-        listed += (i ? "|" : "") + std::string(names[i]);
-    }
-    throw InputError(flag + " " + text + ": expected one of " + listed);
+uint32_t index_of(const ChoiceNames& names, const std::string& name) {
+    for (uint32_t i = 0; i < names.size(); ++i)
+        if (names[i] && name == names[i]) return i;
+    return 0; // unreachable: IsMember has checked the name
 }
 
-// A flag's help with its default, read from the settings' own initialisers.
+// Help that ends with its default, the same words for every flag.
 std::string with_default(const std::string& help, const std::string& value) {
     return help + " (default: " + value + ")";
 }
-std::string with_default(const std::string& help, uint32_t value) { return with_default(help, std::to_string(value)); }
-
-constexpr uint64_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
-
-std::string render_usage() {
-    return "wavefront render SCENE.gltf|.glb [-o OUT] [flags]\n"
-           "Renders a glTF scene by wavefront path tracing on an OpenCL device and writes the\n"
-           "image (.exr: linear float radiance; .png and other 8-bit formats: sRGB).";
+template <class T> std::string with_default(const std::string& help, const T& value) {
+    std::ostringstream text;
+    text << value;
+    return with_default(help, text.str());
 }
 
-// `wavefront cache warm [--cache-dir DIR] [--device SPEC] SCENE...` or
-// `wavefront cache clear [--cache-dir DIR]`.
-CommandLine parse_cache_command(int argc, const char** argv) {
-    CommandLine cl;
-    const std::string action = argc > 2 ? argv[2] : "";
-    if (action != "warm" && action != "clear")
-        throw InputError("cache: expected warm or clear" + (action.empty() ? std::string() : ", not '" + action + "'"));
-    cl.command = action == "warm" ? Command::CacheWarm : Command::CacheClear;
-    for (int i = 3; i < argc; ++i) {
+// The command's name and the flag, before CLI11's own words.
+std::string parse_error_text(const CLI::App& app, const CLI::Error& e) {
+    std::string prefix;
+    for (const CLI::App* c = &app; !c->get_subcommands().empty();) {
+        c = c->get_subcommands().back();
+        prefix += (prefix.empty() ? "" : " ") + c->get_name();
+    }
+    std::string what = e.what();
+    if (!what.empty() && what.back() == '\n') what.pop_back();
+    for (char& c : what)
+        if (c == '\n') c = ' ';
+    if (what == "scene is required" || what == "scenes is required") what = "no scene file given";
+    if (!what.empty()) what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+    return prefix.empty() ? what : prefix + ": " + what;
+}
+
+// A word where a command belongs that names none: CLI11 would take it for an
+// argument and ask for a command, without naming the word.
+void check_command_word(const CLI::App& app, const std::string& word, const std::string& context) {
+    if (word.empty() || word[0] == '-') return;
+    std::string names;
+    for (const CLI::App* c : app.get_subcommands({})) {
+        if (c->get_name() == word) return;
+        names += (names.empty() ? "" : ", ") + c->get_name();
+    }
+    throw InputError(context + "unknown command '" + word + "' (expected " + names + ")");
+}
+
+// The render command's flags, each filling its field of `o`.
+struct RenderFlags {
+    std::string spp, light_sampling, hemisphere, sampler, integrator, schedule, queue_push, aov, config;
+    CLI::Option *schedule_flag = nullptr, *sort_flag = nullptr, *spp_flag = nullptr;
+};
+
+void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
+    RenderSettings& s = o.settings;
+    // The last value given wins, so that a flag typed overrides --config's.
+    render.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    render.add_option("scene", o.scene, "The glTF scene (.gltf or .glb)")->required()->type_name("SCENE");
+    render.add_option("-o,--output", o.output, with_default("Output image; the extension picks the format", o.output))
+        ->type_name("OUT");
+    f.spp_flag = render.add_option("--spp", s.spp, with_default("Samples per pixel", s.spp))
+                     ->check(whole_number(1, 1u << 24));
+    render.add_option("--width", o.width, with_default("Image width", std::to_string(kDefaultImageWidth) +
+                                                                         ", or from --height and the camera's aspect"))
+        ->check(whole_number(1, kMaxSide));
+    render.add_option("--height", o.height, with_default("Image height", "from the width and the camera's aspect"))
+        ->check(whole_number(1, kMaxSide));
+    render.add_option("--max-depth", s.max_depth,
+                      with_default("Bounces per path; 1 is direct lighting only", "unlimited, ended by roulette"))
+        ->check(whole_number(0, 1u << 20));
+    render.add_option("--seed", s.seed, with_default("Random seed; the same seed and device give the same bytes", s.seed))
+        ->check(whole_number(0, UINT32_MAX));
+    render.add_option("--device", o.device,
+                      with_default("OpenCL device: an index from `wavefront devices`, cpu or gpu",
+                                   "the first GPU, else the first device"));
+    render.add_option("--pool-size", s.pool_size,
+                      with_default("Paths in flight, at most the pixel count",
+                                   std::to_string(kDefaultCpuPoolSize) + " for the wavefront on a CPU, where they " +
+                                       "stay in cache, " + std::to_string(kDefaultGpuPoolSize) + " otherwise"))
+        ->check(whole_number(1, 1u << 26));
+    render.add_option("--camera", o.camera,
+                      with_default("Index of the glTF camera to use",
+                                   "the first perspective camera, else one framing the scene"))
+        ->check(whole_number(0, 1u << 20));
+    f.integrator = integrator_name(s.integrator);
+    render.add_option("--integrator", f.integrator,
+                      with_default("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); "
+                                   "the same image", f.integrator))
+        ->check(CLI::IsMember(names_of(kIntegratorNames)));
+    f.schedule = schedule_name(s.schedule);
+    f.schedule_flag = render.add_option("--schedule", f.schedule,
+                                        with_default("The wavefront's launch order: refill, passes (pbrt-v4) or "
+                                                     "fullest (Cycles X)", f.schedule))
+                          ->check(CLI::IsMember(names_of(kScheduleNames)));
+    f.sort_flag = render.add_flag("--sort-materials", s.sort_materials,
+                                  with_default("Sort the paths by the material they hit before shading, wavefront "
+                                               "only", "off"));
+    f.queue_push = queue_push_name(s.queue_push);
+    render.add_option("--queue-push", f.queue_push,
+                      with_default("How kernels append to queues: group (one atomic per work-group), atomic (one "
+                                   "per item) or scan (prefix sum)", f.queue_push))
+        ->check(CLI::IsMember(names_of(kQueuePushNames)));
+    render.add_option("--local-size", s.local_size, with_default("Work-items per work-group", s.local_size))
+        ->check(whole_number(16, 1024));
+    render.add_option("--stats-json", o.stats_json,
+                      with_default("Write the render's statistics as JSON: stage times, rays, counters per iteration",
+                                   "none"))
+        ->type_name("FILE");
+
+    const std::string sampling = "Sampling techniques";
+    f.light_sampling = choice_name(kLightSamplingNames, s.light_sampling);
+    render.add_option("--light-sampling", f.light_sampling, with_default("How emitters are found", f.light_sampling))
+        ->check(CLI::IsMember(names_of(kLightSamplingNames)))
+        ->group(sampling);
+    f.hemisphere = choice_name(kHemisphereNames, s.hemisphere);
+    render.add_option("--hemisphere", f.hemisphere, with_default("Lambertian sampling", f.hemisphere))
+        ->check(CLI::IsMember(names_of(kHemisphereNames)))
+        ->group(sampling);
+    f.sampler = choice_name(kSamplerNames, s.sampler);
+    render.add_option("--sampler", f.sampler, with_default("Sample values (sobol: Owen-scrambled)", f.sampler))
+        ->check(CLI::IsMember(names_of(kSamplerNames)))
+        ->group(sampling);
+    CLI::Option* env = render.add_option("--env", o.environment,
+                                         with_default("Environment light: an equirectangular .exr or .hdr, "
+                                                      "importance-sampled", "none; a scene without any light, or "
+                                                      "lit by emissive textures alone, gets a uniform white one"))
+                           ->type_name("FILE")
+                           ->group(sampling);
+    render.add_option("--env-uniform", o.environment_uniform,
+                      with_default("Environment light of the same radiance L from every direction", "none"))
+        ->check(finite_number(true))
+        ->excludes(env)
+        ->type_name("L")
+        ->group(sampling);
+    render.add_option("--env-rotate", o.environment_rotate, with_default("Turn --env about the up (+y) axis, degrees", 0))
+        ->check(finite_number(false))
+        ->needs(env)
+        ->group(sampling);
+    render.add_option("--env-scale", o.environment_scale, with_default("Multiply --env's radiance", 1))
+        ->check(finite_number(true))
+        ->needs(env)
+        ->group(sampling);
+    render.add_option("--cache-dir", o.cache_dir,
+                      with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
+        ->type_name("DIR");
+    render.add_flag_function("--no-specialize", [&s](int64_t) { s.specialize = false; },
+                    with_default("Compile the generic kernels, every feature on, instead of those for the scene's "
+                                 "features", "off"));
+    render.add_option("--aov", f.aov,
+                      with_default("Extra EXR layers: bounces, the radiance after 0, 1, ..., 6 and 7+ reflections",
+                                   "none"))
+        ->check(CLI::IsMember({"bounces"}));
+
+    const std::string error = "Error against time";
+    render.add_option("--reference", o.reference,
+                      with_default("Report MSE, relMSE and MAE against this image at every checkpoint (8-bit files "
+                                   "are decoded from sRGB)", "none"))
+        ->type_name("REF")
+        ->group(error);
+    render.add_option("--report", o.report_csv,
+                      with_default("Write the checkpoints to this CSV file: seconds,spp,mse,relmse,mae,relmse_estimate",
+                                   "none"))
+        ->type_name("CSV")
+        ->group(error);
+    render.add_option("--report-every", o.progress.report_every,
+                      with_default("A checkpoint every this many seconds", "at each doubling of spp"))
+        ->check(finite_number(true))
+        ->type_name("SECONDS")
+        ->group(error);
+    render.add_option("--time", o.progress.time_budget,
+                      with_default("Stop after this many seconds; then --spp, if given, is a cap", "none"))
+        ->check(finite_number(true))
+        ->type_name("SECONDS")
+        ->group(error);
+    render.add_option("--target-error", o.progress.target_relmse,
+                      with_default("Stop once the estimated relMSE is below X, checked from 16 spp on", "none"))
+        ->check(finite_number(true))
+        ->type_name("X")
+        ->group(error);
+
+    const std::string long_renders = "Long renders";
+    render.add_option("--checkpoint-every", o.checkpoint_every,
+                      with_default("Write the render so far to OUT.partial.exr this often, atomically (Ctrl-C "
+                                   "writes it too)", "never"))
+        ->check(finite_number(true))
+        ->type_name("SECONDS")
+        ->group(long_renders);
+    render.add_option("--resume", o.resume,
+                      with_default("Go on from a partial render; the same scene contents, settings and seed are "
+                                   "checked", "none"))
+        ->type_name("PARTIAL")
+        ->group(long_renders);
+    render.add_flag("--quiet", o.quiet, with_default("Print errors only: no progress, table, report or warning", "off"))
+        ->group(long_renders);
+    render.add_option("--config", f.config,
+                      with_default("Read flags from a TOML file (spp = 64, env-uniform = 1.0, quiet = true, ...); "
+                                   "flags on the command line win", "none"))
+        ->type_name("FILE");
+}
+
+// The file named by render's --config (as `--config FILE` or `--config=FILE`), if any.
+std::string config_path(int argc, const char** argv) {
+    for (int i = 2; i < argc; ++i) {
         const std::string word = argv[i];
-        if (word == "--cache-dir" || word == "--device") {
-            if (i + 1 >= argc) throw InputError("cache " + action + ": " + word + " needs a value");
-            (word == "--cache-dir" ? cl.cache.directory : cl.cache.device) = argv[++i];
-        } else if (!word.empty() && word[0] == '-') {
-            throw InputError("cache " + action + ": unknown flag '" + word + "'");
-        } else if (action == "warm") {
-            cl.cache.scenes.push_back(word);
+        if (word == "--config" && i + 1 < argc) return argv[i + 1];
+        if (word.rfind("--config=", 0) == 0) return word.substr(9);
+    }
+    return "";
+}
+
+// A --config file's keys as flags (`spp = 64` is --spp=64, `quiet = true` is
+// --quiet), to be placed before the command line's own, which then win: every
+// render flag keeps the last value given. Keys may sit at the top or under
+// [render]; one the render command does not know is named.
+std::vector<std::string> config_arguments(const CLI::App& render, const std::string& path) {
+    std::vector<CLI::ConfigItem> items;
+    try {
+        items = CLI::ConfigTOML().from_file(path);
+    } catch (const CLI::Error& e) {
+        throw InputError(path + ": cannot read the config file (" + std::string(e.what()) + ")");
+    }
+    std::vector<std::string> arguments;
+    for (const CLI::ConfigItem& item : items) {
+        if (item.name == "++" || item.name == "--") continue; // CLI11's markers of a section's start and end
+        const bool ours = item.parents.empty() || (item.parents.size() == 1 && item.parents[0] == "render");
+        const std::string flag = "--" + item.name;
+        if (!ours || item.name == "config" || !render.get_option_no_throw(flag))
+            throw InputError(path + ": '" + item.fullname() + "' is not a render flag");
+        if (item.inputs.size() != 1) throw InputError(path + ": '" + item.fullname() + "' needs one value");
+        const std::string& value = item.inputs[0];
+        if (render.get_option(flag)->get_expected_min() == 0) { // a flag: true or false
+            if (value != "true" && value != "false")
+                throw InputError(path + ": '" + item.fullname() + "' is true or false, not " + value);
+            if (value == "true") arguments.push_back(flag);
         } else {
-            throw InputError("cache clear: unexpected argument '" + word + "'");
+            arguments.push_back(flag + "=" + value);
         }
     }
-    if (action == "warm" && cl.cache.scenes.empty()) throw InputError("cache warm: no scene file given");
-    if (action == "clear" && !cl.cache.device.empty()) throw InputError("cache clear: --device is for warm");
-    return cl;
+    return arguments;
+}
+
+// After parsing: the choices into settings, and the checks between flags.
+void settle_render(RenderOptions& o, const RenderFlags& f) {
+    RenderSettings& s = o.settings;
+    s.integrator = static_cast<Integrator>(index_of(kIntegratorNames, f.integrator));
+    s.schedule = static_cast<Schedule>(index_of(kScheduleNames, f.schedule));
+    s.queue_push = static_cast<QueuePush>(index_of(kQueuePushNames, f.queue_push));
+    s.light_sampling = index_of(kLightSamplingNames, f.light_sampling);
+    s.hemisphere = index_of(kHemisphereNames, f.hemisphere);
+    s.sampler = index_of(kSamplerNames, f.sampler);
+    if (!f.aov.empty()) s.bounce_layers = 8;
+    if (s.integrator == Integrator::Megakernel && f.schedule_flag->count())
+        throw InputError("render: --schedule orders the wavefront's stages; the megakernel has none");
+    if (s.integrator == Integrator::Megakernel && s.sort_materials)
+        throw InputError("render: --sort-materials sorts the wavefront's queue; the megakernel has none");
+    // A time budget or a target error alone leaves the sample count open.
+    const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
+    o.progress.max_spp = !f.spp_flag->count() && open_ended ? 0 : s.spp;
+}
+
+void declare_cache(CLI::App& cache, CommandLine& cl) {
+    cache.require_subcommand(1);
+    CLI::App* warm = cache.add_subcommand("warm", "Compile the kernels these scenes need ahead of time");
+    warm->add_option("scenes", cl.cache.scenes, "glTF scenes")->required()->type_name("SCENE...");
+    warm->add_option("--device", cl.cache.device,
+                     with_default("OpenCL device: an index, cpu or gpu", "the first GPU, else the first device"));
+    warm->add_option("--cache-dir", cl.cache.directory,
+                     with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
+        ->type_name("DIR");
+    warm->callback([&cl] { cl.command = Command::CacheWarm; });
+    CLI::App* clear = cache.add_subcommand("clear", "Remove the compiled kernels kept on disk");
+    clear->add_option("--cache-dir", cl.cache.directory,
+                      with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
+        ->type_name("DIR");
+    clear->callback([&cl] { cl.command = Command::CacheClear; });
 }
 
 } // namespace
 
 CommandLine parse_command_line(int argc, const char** argv) {
     CommandLine cl;
-    const std::string first = argc > 1 ? argv[1] : "";
-    if (argc < 2 || first == "--help" || first == "-h" || first == "help") {
-        cl.help = "usage: wavefront render SCENE [flags]   render a glTF scene (see `wavefront render --help`)\n"
-                  "       wavefront devices                list OpenCL platforms and devices\n"
-                  "       wavefront cache warm SCENE...    compile the kernels those scenes need ahead of time\n"
-                  "       wavefront cache clear            remove the compiled kernels kept on disk\n"
-                  "         (both take --cache-dir DIR; warm takes --device SPEC)\n"
-                  "       wavefront --version";
-        return cl;
-    }
-    if (first == "--version") {
+    CLI::App app("Renders glTF scenes by wavefront path tracing on OpenCL devices.", "wavefront");
+    app.require_subcommand(1);
+    app.add_flag("--version", "Print the commit, build type and the OpenCL, PoCL and OpenImageIO versions");
+    CLI::App* render = app.add_subcommand("render", "Render a glTF scene and write the image (.exr: linear float "
+                                                    "radiance; .png and other 8-bit formats: sRGB)");
+    RenderFlags flags;
+    declare_render(*render, cl.render, flags);
+    render->callback([&] { cl.command = Command::Render; });
+    app.add_subcommand("devices", "List OpenCL platforms and devices")->callback([&] { cl.command = Command::Devices; });
+    declare_cache(*app.add_subcommand("cache", "Compiled kernels on disk: warm SCENE... or clear"), cl);
+
+    // --version alone, before CLI11 asks for a command.
+    if (argc == 2 && std::string(argv[1]) == "--version") {
         cl.command = Command::Version;
         return cl;
     }
-    if (first == "devices") {
-        if (argc > 2) throw InputError(std::string("devices: unexpected argument '") + argv[2] + "'");
-        cl.command = Command::Devices;
+    if (argc > 1) check_command_word(app, argv[1], "");
+    if (argc > 2 && std::string(argv[1]) == "cache") check_command_word(*app.get_subcommand("cache"), argv[2], "cache: ");
+    std::vector<std::string> words(argv + 1, argv + argc); // CLI11 takes them last first
+    if (argc > 1 && std::string(argv[1]) == "render")
+        if (const std::string config = config_path(argc, argv); !config.empty()) {
+            const std::vector<std::string> from_file = config_arguments(*render, config);
+            words.insert(words.begin() + 1, from_file.begin(), from_file.end());
+        }
+    std::reverse(words.begin(), words.end());
+    try {
+        app.parse(words);
+    } catch (const CLI::CallForHelp&) {
+        cl.command = Command::Help;
+        cl.help = app.help(); // the help of the command asked about, when one was
         return cl;
-    }
-    if (first == "cache") return parse_cache_command(argc, argv);
-    if (first != "render")
-        throw InputError("unknown command '" + first + "' (expected render, devices or cache)");
-
-    RenderOptions& o = cl.render;
-    std::vector<std::string> positional;
-    OIIO::ArgParse ap;
-    ap.intro(render_usage()).usage("wavefront render SCENE [flags]").exit_on_error(false);
-    ap.add_help(false);
-    ap.arg("filename").hidden().action([&](OIIO::cspan<const char*> a) { positional.emplace_back(a[0]); });
-    ap.arg("-h").help("Print this help").store_true();
-    ap.arg("--help").hidden().store_true();
-    ap.arg("-o OUT").help(with_default("Output image; the extension picks the format", o.output));
-    ap.arg("--spp N").help(with_default("Samples per pixel", o.settings.spp));
-    ap.arg("--width N").help(with_default("Image width", std::to_string(kDefaultImageWidth) + ", or from --height and the camera's aspect"));
-    ap.arg("--height N").help("Image height (default: from the width and the camera's aspect)");
-    ap.arg("--max-depth N").help("Bounces per path; 1 is direct lighting only (default: unlimited, ended by roulette)");
-    ap.arg("--seed N").help(with_default("Random seed; the same seed and device give the same bytes", o.settings.seed));
-    ap.arg("--device SPEC").help("OpenCL device: an index from `wavefront devices`, cpu or gpu (default: first GPU, else first device)");
-    ap.arg("--pool-size N").help("Paths in flight, at most the pixel count (default: " +
-                                 std::to_string(kDefaultCpuPoolSize) + " for the wavefront on a CPU, where they stay in cache, " +
-                                 std::to_string(kDefaultGpuPoolSize) + " otherwise)");
-    ap.arg("--camera N").help("Index of the glTF camera to use (default: the first perspective camera, else one framing the scene)");
-    ap.arg("--integrator I").help(with_default("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); the same image", integrator_name(o.settings.integrator)));
-    ap.arg("--schedule S").help(with_default("The wavefront's launch order: refill, passes (pbrt-v4) or fullest (Cycles X)", schedule_name(o.settings.schedule)));
-    ap.arg("--sort-materials").store_true().help("Sort the paths by the material they hit before shading, wavefront only (default: off)");
-    ap.arg("--queue-push P").help(with_default("How kernels append to queues: group (one atomic per work-group), atomic (one per item) or scan (prefix sum)", queue_push_name(o.settings.queue_push)));
-    ap.arg("--local-size N").help(with_default("Work-items per work-group, 16 to 1024", o.settings.local_size));
-    ap.arg("--stats-json FILE").help("Write the render's statistics as JSON: stage times, rays, counters per iteration (default: none)");
-    ap.separator("Sampling techniques:");
-    ap.arg("--light-sampling T").help(with_default("How emitters are found: bsdf, nee or mis", choice_name(kLightSamplingNames, o.settings.light_sampling)));
-    ap.arg("--hemisphere H").help(with_default("Lambertian sampling: uniform or cosine", choice_name(kHemisphereNames, o.settings.hemisphere)));
-    ap.arg("--sampler S").help(with_default("Sample values: independent or sobol (Owen-scrambled)", choice_name(kSamplerNames, o.settings.sampler)));
-    ap.arg("--env FILE").help("Environment light: an equirectangular .exr or .hdr, importance-sampled (default: none; a scene without any light gets a uniform white one)");
-    ap.arg("--env-uniform L").help("Environment light of the same radiance L from every direction, instead of --env (default: none)");
-    ap.arg("--env-rotate DEGREES").help("Turn the environment about the up (+y) axis (default: 0)");
-    ap.arg("--env-scale S").help("Multiply the environment's radiance (default: 1)");
-    ap.arg("--cache-dir DIR").help("Where compiled kernels are kept (default: $XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront)");
-    ap.arg("--no-specialize").store_true().help("Compile the generic kernels, every feature on, instead of those for the scene's features (default: off)");
-    ap.arg("--aov A").help("Extra EXR layers: bounces, the radiance after 0, 1, ..., 6 and 7+ reflections (default: none)");
-    ap.separator("Error against time:");
-    ap.arg("--reference REF").help("Report MSE, relMSE and MAE against this image at every checkpoint (default: none)");
-    ap.arg("--report CSV").help("Write the checkpoints to this CSV file: seconds,spp,mse,relmse,mae,relmse_estimate (default: none)");
-    ap.arg("--report-every SECONDS").help("A checkpoint every this many seconds (default: at each doubling of spp)");
-    ap.arg("--time SECONDS").help("Stop after this many seconds; then --spp, if given, is a cap (default: none)");
-    ap.arg("--target-error X").help("Stop once the estimated relMSE is below X, checked from 16 spp on (default: none)");
-    ap.separator("Long renders:");
-    ap.arg("--checkpoint-every SECONDS").help("Write the render so far to OUT.partial.exr this often, atomically (default: never; Ctrl-C writes it too)");
-    ap.arg("--resume PARTIAL").help("Go on from a partial render; the same scene, settings and seed are checked (default: none)");
-    ap.arg("--quiet").store_true().help("No progress line on stderr (default: off)");
-
-    // ArgParse expects argv[0]; ours is "render".
-    if (ap.parse_args(argc - 1, argv + 1) < 0) throw InputError("render: " + ap.geterror());
-    if (ap["h"].get<int>() || ap["help"].get<int>()) {
-        ap.print_help(); // ArgParse prints to stdout itself
+    } catch (const CLI::CallForAllHelp&) {
+        cl.command = Command::Help;
+        cl.help = app.help("", CLI::AppFormatMode::All);
         return cl;
+    } catch (const CLI::ParseError& e) {
+        if (argc < 2) { // no command: the help, as most tools do
+            cl.command = Command::Help;
+            cl.help = app.help();
+            return cl;
+        }
+        throw InputError(parse_error_text(app, e));
     }
-    if (positional.size() != 1)
-        throw InputError(positional.empty() ? "render: no scene file given"
-                                            : "render: more than one scene file given ('" + positional[1] + "')");
-    o.scene = positional[0];
-
-    auto text = [&](const char* name) { return ap[name].get<std::string>(); };
-    if (!text("o").empty()) o.output = text("o");
-    if (!text("spp").empty()) o.settings.spp = parse_count("--spp", text("spp"), 1, 1u << 24);
-    if (!text("width").empty()) o.width = parse_count("--width", text("width"), 1, kMaxSide);
-    if (!text("height").empty()) o.height = parse_count("--height", text("height"), 1, kMaxSide);
-    if (!text("max-depth").empty()) o.settings.max_depth = parse_count("--max-depth", text("max-depth"), 0, 1u << 20);
-    if (!text("seed").empty()) o.settings.seed = parse_count("--seed", text("seed"), 0, UINT32_MAX);
-    if (!text("pool-size").empty()) o.settings.pool_size = parse_count("--pool-size", text("pool-size"), 1, 1u << 26);
-    if (!text("camera").empty()) o.camera = static_cast<int>(parse_count("--camera", text("camera"), 0, 1u << 20));
-    o.device = text("device");
-    if (!text("light-sampling").empty())
-        o.settings.light_sampling = parse_choice("--light-sampling", text("light-sampling"), kLightSamplingNames);
-    if (!text("hemisphere").empty())
-        o.settings.hemisphere = parse_choice("--hemisphere", text("hemisphere"), kHemisphereNames);
-    if (!text("sampler").empty())
-        o.settings.sampler = parse_choice("--sampler", text("sampler"), kSamplerNames);
-    if (!text("aov").empty()) {
-        parse_choice("--aov", text("aov"), ChoiceNames{"bounces"});
-        o.settings.bounce_layers = 8;
-    }
-    if (!text("integrator").empty())
-        o.settings.integrator =
-            static_cast<Integrator>(parse_choice("--integrator", text("integrator"), kIntegratorNames));
-    if (!text("schedule").empty()) {
-        o.settings.schedule =
-            static_cast<Schedule>(parse_choice("--schedule", text("schedule"), kScheduleNames));
-        if (o.settings.integrator == Integrator::Megakernel)
-            throw InputError("--schedule orders the wavefront's stages; the megakernel has none");
-    }
-    if (!text("local-size").empty()) o.settings.local_size = parse_count("--local-size", text("local-size"), 16, 1024);
-    if (!text("queue-push").empty())
-        o.settings.queue_push =
-            static_cast<QueuePush>(parse_choice("--queue-push", text("queue-push"), kQueuePushNames));
-    o.settings.sort_materials = ap["sort-materials"].get<int>();
-    if (o.settings.sort_materials && o.settings.integrator == Integrator::Megakernel)
-        throw InputError("--sort-materials sorts the wavefront's queue; the megakernel has none");
-    o.stats_json = text("stats-json");
-    if (!text("checkpoint-every").empty())
-        o.checkpoint_every = parse_positive("--checkpoint-every", text("checkpoint-every"));
-    o.resume = text("resume");
-    o.quiet = ap["quiet"].get<int>();
-    o.settings.specialize = !ap["no-specialize"].get<int>();
-    o.cache_dir = text("cache-dir");
-    o.environment = text("env");
-    if (!text("env-rotate").empty()) o.environment_rotate = float(parse_finite("--env-rotate", text("env-rotate")));
-    if (!text("env-scale").empty()) o.environment_scale = float(parse_positive("--env-scale", text("env-scale")));
-    if (o.environment.empty() && (!text("env-rotate").empty() || !text("env-scale").empty()))
-        throw InputError("--env-rotate and --env-scale need --env");
-    if (!text("env-uniform").empty()) {
-        if (!o.environment.empty()) throw InputError("--env-uniform and --env exclude each other");
-        o.environment_uniform = float(parse_positive("--env-uniform", text("env-uniform")));
-    }
-    o.reference = text("reference");
-    o.report_csv = text("report");
-    if (!text("report-every").empty()) o.progress.report_every = parse_positive("--report-every", text("report-every"));
-    if (!text("time").empty()) o.progress.time_budget = parse_positive("--time", text("time"));
-    if (!text("target-error").empty()) o.progress.target_relmse = parse_positive("--target-error", text("target-error"));
-    // A time budget or a target error alone leaves the sample count open.
-    const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
-    o.progress.max_spp = text("spp").empty() && open_ended ? 0 : o.settings.spp;
-    cl.command = Command::Render;
+    if (cl.command == Command::Render) settle_render(cl.render, flags);
     return cl;
 }
 

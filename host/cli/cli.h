@@ -1,6 +1,7 @@
 // cli.h — the command line: `wavefront render SCENE [flags]`, `wavefront
-// devices`, `--help`, `--version`. Every flag value is checked here; a bad one
-// is an InputError that names the flag and the value.
+// devices`, `wavefront cache warm|clear`, `--help` on each, `--version`. Every
+// flag value is checked here; a bad one is an InputError that names the
+// command, the flag and the value.
 #pragma once
 
 #include <cstdint>
@@ -31,7 +32,7 @@ struct RenderOptions {
     std::string stats_json;   // where to write the render's statistics (render_stats_json.h)
     double checkpoint_every = 0.0; // seconds between partial renders written to OUT.partial.exr; 0: none
     std::string resume;            // a partial render to go on from
-    bool quiet = false;            // no progress line
+    bool quiet = false;            // errors only: no progress line, table, report, warning or note
 };
 
 // `wavefront cache warm|clear`.

@@ -8,6 +8,7 @@
 #include "cli/cli.h"
 #include "cli/exit_status.h"
 #include "cli/render_command.h"
+#include "cli/version_text.h"
 
 int main(int argc, const char** argv) {
     try {
@@ -17,7 +18,7 @@ int main(int argc, const char** argv) {
             if (!cl.help.empty()) std::cout << cl.help << "\n";
             return 0;
         case wf::Command::Version:
-            std::cout << "wavefront " << WF_VERSION << "\n";
+            std::cout << wf::version_text();
             return 0;
         case wf::Command::Devices:
             wf::print_devices(std::cout);
@@ -29,8 +30,11 @@ int main(int argc, const char** argv) {
             wf::clear_cache(cl.cache, std::cout);
             return 0;
         case wf::Command::Render: {
-            const wf::RenderSummary summary = wf::run_render(cl.render, std::cout, std::cerr);
-            wf::print_report(std::cout, summary);
+            // --quiet: errors only, which reach stderr as exceptions, below.
+            std::ostream quiet(nullptr);
+            std::ostream& out = cl.render.quiet ? quiet : std::cout;
+            const wf::RenderSummary summary = wf::run_render(cl.render, out, cl.render.quiet ? quiet : std::cerr);
+            wf::print_report(out, summary);
             return summary.interrupted_by ? 128 + summary.interrupted_by : 0; // as a shell reports a signal
         }
         }

@@ -89,6 +89,7 @@ void Interrupt::interrupt_and_resume(const std::vector<std::string>& extra) {
         return args;
     };
     std::vector<std::string> args = with_extra(render_args(stopped, 1u << 20));
+    args.erase(std::find(args.begin(), args.end(), "--quiet")); // it says how to go on
     args.insert(args.end(), {"--checkpoint-every", "0.3"});
     const pid_t pid = start(args);
     ASSERT_TRUE(appears(partial)) << "no checkpoint while rendering";
