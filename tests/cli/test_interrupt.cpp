@@ -12,7 +12,6 @@
 #include <fstream>
 #include <vector>
 
-#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -216,29 +215,17 @@ TEST_F(Interrupt, AStopBeforeAnySampleReplacesNothing) {
     std::ofstream(output) << "an earlier render";
     std::vector<std::string> args = render_args(output, 64);
     args.erase(std::find(args.begin(), args.end(), "--quiet"));
-    std::string command = std::string("exec '") + WF_BINARY + "' render";
-    for (const std::string& a : args) command += " '" + a + "'";
+    std::string words = "render";
+    for (const std::string& a : args) words += " '" + a + "'";
     // On a terminal it says when it starts building; its handlers are in place by then.
-    int terminal = -1;
-    const pid_t pid = ::forkpty(&terminal, nullptr, nullptr, nullptr);
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    std::string seen;
-    char buffer[4096];
     bool signalled = false;
-    for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) {
-        seen.append(buffer, size_t(n));
-        if (!signalled && seen.find("building the render") != std::string::npos) {
-            ::kill(pid, SIGINT);
-            signalled = true;
-        }
-    }
-    ::close(terminal);
+    const test::ProcessResult r =
+        test::run_wavefront_on_terminal(words, dir_.string(), [&](const std::string& seen, pid_t pid) {
+            if (!signalled && seen.find("building the render") != std::string::npos) signalled = ::kill(pid, SIGINT) == 0;
+        });
+    const std::string& seen = r.out;
     ASSERT_TRUE(signalled) << seen;
-    EXPECT_EQ(wait_for(pid), 128 + SIGINT) << seen;
+    EXPECT_EQ(r.exit_code, 128 + SIGINT) << seen;
     EXPECT_NE(seen.find("interrupted before any sample finished: nothing written"), std::string::npos) << seen;
     EXPECT_EQ(test::read_file(output), "an earlier render");
     EXPECT_FALSE(fs::exists(partial_render_path(output)));

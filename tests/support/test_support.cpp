@@ -98,7 +98,8 @@ ProcessResult run_wavefront(const std::string& args, const std::string& scratch_
     return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
 }
 
-ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir) {
+ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir,
+                                        const std::function<void(const std::string&, pid_t)>& watch) {
     const std::string command = "cd '" + scratch_dir + "' && exec '" + WF_BINARY + "' " + args;
     int terminal = -1;
     const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
@@ -109,7 +110,10 @@ ProcessResult run_wavefront_on_terminal(const std::string& args, const std::stri
     }
     ProcessResult result;
     char buffer[4096];
-    for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) result.out.append(buffer, size_t(n));
+    for (ssize_t n; (n = ::read(terminal, buffer, sizeof buffer)) > 0;) {
+        result.out.append(buffer, size_t(n));
+        if (watch) watch(result.out, child);
+    }
     ::close(terminal); // read() fails with EIO once the child has closed its side
     int status = 0;
     ::waitpid(child, &status, 0);

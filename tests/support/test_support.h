@@ -2,8 +2,11 @@
 // suite runs on (opened once), scenes built in code, and image statistics.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 #include <glm/glm.hpp>
 
@@ -66,7 +69,10 @@ ProcessResult run_wavefront(const std::string& args, const std::string& scratch_
 
 // The same, with stdout and stderr both on one pseudo-terminal, as a user at a
 // terminal sees them: `out` holds what the terminal received, `err` is empty.
-ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir);
+// `watch`, if given, sees what has arrived so far, and the process, after each
+// read (to signal it once it shows a sign of life, say).
+ProcessResult run_wavefront_on_terminal(const std::string& args, const std::string& scratch_dir,
+                                        const std::function<void(const std::string&, pid_t)>& watch = {});
 
 // ---------------------------------------------------------------------------
 // Added for test_stability.cpp.
