@@ -1,12 +1,12 @@
 // gltf_file.cpp — see gltf_file.h.
 #include "gltf/gltf_file.h"
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_glb.h"
 #include "gltf/gltf_textures.h"
 
 namespace wf {
@@ -59,7 +59,8 @@ std::vector<unsigned char> read_gltf_file(const std::string& path) {
 tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
     check_size(path, bytes.size());
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool binary = is_glb(path, bytes);
+    if (binary) glb_json_chunk(path, bytes);
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
     const auto length = static_cast<unsigned int>(bytes.size());
 
