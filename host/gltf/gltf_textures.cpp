@@ -4,12 +4,12 @@
 
 #include <tiny_gltf.h>
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_file.h"
 
 namespace wf {
 namespace {
@@ -43,21 +43,6 @@ void read_pair(const tinygltf::Value& transform, const char* name, float out[2],
     if (!pair.IsArray() || pair.ArrayLen() != 2)
         fail(where, std::string("KHR_texture_transform ") + name + " must have 2 numbers");
     for (int i = 0; i < 2; ++i) out[i] = float(finite_number(pair.Get(i), where, "KHR_texture_transform number"));
-}
-
-// A URI's %XX escapes decoded (tinygltf's own decoder is not exported).
-std::string uri_decode(const std::string& uri) {
-    std::string decoded;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
-            std::isxdigit((unsigned char)uri[i + 2])) {
-            decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-        } else {
-            decoded += uri[i];
-        }
-    }
-    return decoded;
 }
 
 } // namespace

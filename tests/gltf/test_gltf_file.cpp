@@ -1,5 +1,6 @@
 // test_gltf_file.cpp — the file around the glTF, as a hostile one may shape
-// it: GLB framing. Each must fail with one line naming the file and the fault.
+// it: GLB framing, JSON nesting, and URIs that point outside the scene's
+// folder. Each must fail with one line naming the file and the fault.
 #include "gltf/gltf_document.h"
 
 #include <cstring>
@@ -88,6 +89,70 @@ TEST_F(GlbFile, TruncatedChunksAreNamed) {
     expect_mentions(load_error(write("header.glb")),
                     {"header.glb: truncated GLB: chunk 1 at byte " + std::to_string(bin_chunk_) +
                      " has 4 of its 8 header bytes"});
+}
+
+// `levels` arrays nested in the document's extras.
+std::string nested_extras(GltfDocument doc, size_t levels, const fs::path& path) {
+    doc.gltf["extras"] = "NEST";
+    doc.write(path);
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("\"NEST\""), 6, std::string(levels, '[') + std::string(levels, ']'));
+    std::ofstream(path) << text;
+    return path.string();
+}
+
+// tinygltf copies extras into its Value by recursion: 100 000 levels
+// overflowed the call stack (issue 15).
+TEST_F(GltfLoaderTest, JsonNestedTooDeepIsNamed) {
+    expect_mentions(load_error(nested_extras(one_triangle(), 100000, dir_ / "deep.gltf")),
+                    {"deep.gltf: JSON nested deeper than 512 levels"});
+    // The document and its extras object take one level each.
+    EXPECT_EQ(load_gltf(nested_extras(one_triangle(), 511, dir_ / "fits.gltf")).triangle_count(), 1u);
+    expect_mentions(load_error(nested_extras(one_triangle(), 512, dir_ / "over.gltf")), {"over.gltf: JSON nested"});
+}
+
+TEST_F(GltfLoaderTest, JsonNestedTooDeepInAGlbIsNamed) {
+    GltfDocument doc = one_triangle();
+    std::vector<unsigned char> glb = doc.glb();
+    // The JSON chunk's last byte is padding or its closing brace; either way
+    // an array of arrays fits before it as a new member.
+    const std::string deep = ",\"extras\":" + std::string(1000, '[') + std::string(1000, ']');
+    const size_t json_end = 20 + word_at(glb, 12);
+    size_t brace = json_end - 1;
+    while (glb[brace] != '}') --brace;
+    glb.insert(glb.begin() + long(brace), deep.begin(), deep.end());
+    const size_t padded = (deep.size() + 3) / 4 * 4;
+    glb.insert(glb.begin() + long(json_end + deep.size()), padded - deep.size(), ' ');
+    set_word(glb, 12, uint32_t(word_at(glb, 12) + padded));
+    set_word(glb, 8, uint32_t(glb.size()));
+    expect_mentions(load_error(write_text("deep.glb", as_text(glb))), {"deep.glb: JSON nested deeper than 512 levels"});
+}
+
+// tinygltf joins any URI to the scene's folder, so these were reported as
+// missing files; none is looked for.
+TEST_F(GltfLoaderTest, AbsoluteUrisAreRefused) {
+    for (const std::string uri : {"/etc/passwd", "file:///etc/passwd", "C:\\x.bin", "%2Fetc%2Fpasswd", "\\\\host\\x"}) {
+        GltfDocument doc;
+        doc.gltf["buffers"] = {{{"uri", uri}, {"byteLength", 4}}};
+        expect_mentions(load_error(doc.write(dir_ / "buffer.gltf")),
+                        {"buffer.gltf: buffer 0: absolute URI '" + uri + "' lies outside the scene's folder"});
+    }
+    GltfDocument doc = one_triangle();
+    doc.gltf["images"] = {{{"uri", "file:///etc/passwd"}}};
+    expect_mentions(load_error(doc.write(dir_ / "image.gltf")),
+                    {"image.gltf: image 0: absolute URI 'file:///etc/passwd' lies outside the scene's folder"});
+}
+
+// tinygltf goes on without an image it could not read; one outside the
+// folder is refused all the same, used or not.
+TEST_F(GltfLoaderTest, ImageOutsideTheFolderIsRefused) {
+    fs::create_directories(dir_ / "scene");
+    write_text("outside.png", "not read");
+    GltfDocument doc = one_triangle();
+    doc.gltf["images"] = {{{"uri", "../outside.png"}}};
+    expect_mentions(load_error(doc.write(dir_ / "scene" / "escape.gltf")),
+                    {"escape.gltf: refers to ", "outside.png, which lies outside the scene's folder"});
 }
 
 } // namespace
