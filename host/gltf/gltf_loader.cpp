@@ -10,10 +10,12 @@
 // camera among those the walk met.
 //
 // The parts, in that order: gltf_file.h (reading, parsing, the folder
-// sandbox), gltf_diagnostics.h (messages, extensions), gltf_materials.h and
-// gltf_textures.h, gltf_nodes.h (transforms, cameras), gltf_meshes.h and
-// gltf_accessors.h (primitives), gltf_lights.h. This file walks the nodes and
-// puts the scene together.
+// sandbox; with gltf_glb.h and gltf_json_scan.h, what is checked before
+// tinygltf parses), gltf_diagnostics.h (messages, extensions), gltf_float.h
+// (numbers as the renderer's floats), gltf_materials.h and gltf_textures.h,
+// gltf_nodes.h (transforms, cameras), gltf_meshes.h and gltf_accessors.h
+// (primitives), gltf_lights.h. This file walks the nodes and puts the scene
+// together.
 #include "gltf/gltf_loader.h"
 
 #include <map>
@@ -28,6 +30,7 @@
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"
 #include "gltf/gltf_file.h"
+#include "gltf/gltf_float.h"
 #include "gltf/gltf_lights.h"
 #include "gltf/gltf_materials.h"
 #include "gltf/gltf_meshes.h"
@@ -156,6 +159,8 @@ private:
     glm::dmat4 place(size_t index, const glm::dmat4& parent_world, const std::string& where) {
         const tinygltf::Node& node = model_.nodes[index];
         const glm::dmat4 world = parent_world * local_transform(node, where);
+        // What the node places (mesh, camera, lights) is taken to float from here.
+        check_float_range(world, where, "world transform");
         visited_.push_back({index, world});
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
