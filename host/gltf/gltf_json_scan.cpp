@@ -24,7 +24,7 @@ public:
     bool binary(json::binary_t&) { return value(); }
     bool string(json::string_t& text) {
         // A string under "uri" in an element of the top-level "buffers" or "images".
-        if (open_.size() == 3 && open_[1].is_array && !open_[2].is_array && slot() == "uri") {
+        if (open_.size() == 3 && open_[1].is_array && !open_[2].is_array && key_ == "uri") {
             const std::string& array = open_[1].slot;
             if (array == "buffers" || array == "images")
                 references.push_back({array == "buffers" ? "buffer" : "image", std::stoul(open_[2].slot), text});
@@ -49,14 +49,9 @@ private:
         size_t next_index = 0;
     };
 
-    // Where the value about to be read sits in the innermost container.
-    std::string slot() {
-        if (open_.empty()) return {};
-        return open_.back().is_array ? std::to_string(open_.back().next_index++) : key_;
-    }
-
+    // A value other than a container: only its place in an array counts.
     bool value() {
-        slot();
+        if (!open_.empty() && open_.back().is_array) ++open_.back().next_index;
         return true;
     }
 
@@ -65,7 +60,9 @@ private:
             too_deep = true;
             return false;
         }
-        open_.push_back({slot(), is_array});
+        std::string slot;
+        if (!open_.empty()) slot = open_.back().is_array ? std::to_string(open_.back().next_index++) : key_;
+        open_.push_back({std::move(slot), is_array});
         return true;
     }
 
