@@ -28,7 +28,7 @@ void set_word(std::vector<unsigned char>& bytes, size_t offset, uint32_t word) {
 
 // The GLB of one_triangle(), checked to load, so that each test below fails
 // for the fault it makes and nothing else.
-class GlbFile : public GltfLoaderTest {
+class GltfGlbFile : public GltfLoaderTest {
 protected:
     void SetUp() override {
         GltfLoaderTest::SetUp();
@@ -43,7 +43,7 @@ protected:
     size_t bin_chunk_ = 0; // where the BIN chunk's header starts
 };
 
-TEST_F(GlbFile, WrongMagicIsNamedNotParsedAsJson) {
+TEST_F(GltfGlbFile, WrongMagicIsNamedNotParsedAsJson) {
     std::memcpy(glb_.data(), "PK\3\4", 4);
     expect_mentions(load_error(write("zip.glb")),
                     {"zip.glb: not a GLB file (magic is 0x04034B50, expected 0x46546C67 'glTF')"});
@@ -55,12 +55,12 @@ TEST_F(GlbFile, WrongMagicIsNamedNotParsedAsJson) {
     EXPECT_EQ(load_gltf((dir_ / "text.glb").string()).triangle_count(), 1u);
 }
 
-TEST_F(GlbFile, VersionOtherThanTwoIsNamed) {
+TEST_F(GltfGlbFile, VersionOtherThanTwoIsNamed) {
     set_word(glb_, 4, 1);
     expect_mentions(load_error(write("v1.glb")), {"v1.glb: GLB version 1 is not supported (expected 2)"});
 }
 
-TEST_F(GlbFile, TruncatedChunksAreNamed) {
+TEST_F(GltfGlbFile, TruncatedChunksAreNamed) {
     const size_t size = glb_.size();
     glb_.resize(size - 4);
     expect_mentions(load_error(write("cut.glb")),
