@@ -52,6 +52,7 @@ bool starts_as_json(const std::vector<unsigned char>& bytes) {
     return i < bytes.size() && bytes[i] == '{';
 }
 
+// Text, however broken, is left for the JSON parser to name what is wrong.
 bool starts_as_text(const std::vector<unsigned char>& bytes) {
     if (bom_length(bytes) > 0) return true;
     for (size_t i = 0; i < bytes.size() && i < 4; ++i)
