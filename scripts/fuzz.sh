@@ -4,7 +4,11 @@
 # scenes/*.gltf and every .gltf/.glb in ../shared/scenes-real/ (the corpus,
 # build-fuzz/corpus/, keeps what the fuzzer adds), and
 # exits non-zero when it finds a crash, leak, hang or sanitizer report (the
-# input is left as build-fuzz/crash-*). Prints libFuzzer's closing counts.
+# input is left as build-fuzz/crash-*). Prints libFuzzer's closing counts and
+# a summary, `fuzz: N inputs, M crashes, ...`, also appended to
+# build-fuzz/runs.log. Mutations are structure-aware where the input is a glTF
+# (tests/fuzz/gltf_mutator.cpp); WF_FUZZ_MUTATOR=bytes leaves them all to
+# libFuzzer's byte mutator, for comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-120}"
@@ -36,8 +40,18 @@ build-fuzz/fuzz_gltf_loader build-fuzz/corpus build-fuzz/seeds \
   -max_total_time="$seconds" -max_len=2000000 -timeout=10 -rss_limit_mb=4096 \
   -seed="${FUZZ_SEED:-1}" -artifact_prefix=build-fuzz/ -print_final_stats=1 \
   >build-fuzz/fuzz.log 2>&1 || status=$?
-grep -E '^(Done [0-9]+ runs|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb)|ERROR|SUMMARY|Test unit written' \
+grep -E '^(Done [0-9]+ runs|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb|mutator:)|ERROR|SUMMARY|Test unit written' \
   build-fuzz/fuzz.log || true
+# libFuzzer stops at the first crash, leak, hang or out-of-memory, so this is
+# 0 or 1; its input is the artifact the line names.
+inputs=$(grep -oP '^stat::number_of_executed_units: \K[0-9]+' build-fuzz/fuzz.log ||
+  grep -oP '^#\K[0-9]+' build-fuzz/fuzz.log | tail -1)
+crashes=$(grep -c 'Test unit written to' build-fuzz/fuzz.log || true)
+coverage=$(grep -oP '^#[0-9]+\s+(DONE|pulse|NEW|REDUCE|INITED)\s+cov: \K[0-9]+ ft: [0-9]+' build-fuzz/fuzz.log | tail -1 || true)
+mutator=$(grep -oP '^mutator: \K.*' build-fuzz/fuzz.log || echo "${WF_FUZZ_MUTATOR:-structure-aware} (no count: the run stopped early)")
+summary="fuzz: ${inputs} inputs, ${crashes} crashes, cov ${coverage:-?}, mutator: ${mutator}"
+echo "$summary"
+echo "$(date -u +%FT%TZ) ${seconds}s seed=${FUZZ_SEED:-1} ${summary#fuzz: }" >>build-fuzz/runs.log
 if ((status)); then
   echo "fuzz: FAILED (exit $status); the log is build-fuzz/fuzz.log" >&2
   exit "$status"

@@ -1,12 +1,15 @@
 // gltf_file.cpp — see gltf_file.h.
 #include "gltf/gltf_file.h"
 
-#include <cstring>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string_view>
 
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_glb.h"
+#include "gltf/gltf_json_scan.h"
 #include "gltf/gltf_textures.h"
 
 namespace wf {
@@ -40,7 +43,45 @@ bool read_inside_folder(std::vector<unsigned char>* out, std::string* error, con
     return tinygltf::ReadWholeFile(out, error, file, nullptr);
 }
 
+// A URI with a scheme ("file:", "http:", "C:") or a root ("/etc/passwd",
+// "\\\\server\\share") names a file wherever it likes; tinygltf would join it to
+// the scene's folder anyway and report the result missing.
+bool is_absolute(const std::string& uri) {
+    if (!uri.empty() && (uri[0] == '/' || uri[0] == '\\')) return true;
+    const size_t colon = uri.find(':');
+    if (colon == std::string::npos || colon == 0 || !std::isalpha(static_cast<unsigned char>(uri[0]))) return false;
+    for (size_t i = 1; i < colon; ++i) { // RFC 3986: a letter, then letters, digits, "+", "-" or "."
+        const char c = uri[i];
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return false;
+    }
+    return true;
+}
+
+// Data URIs carry their bytes; every other URI must be a path below the
+// scene's folder, as tinygltf decodes it.
+void check_references(const std::string& path, const std::vector<FileReference>& references) {
+    for (const FileReference& reference : references) {
+        if (reference.uri.compare(0, 5, "data:") == 0 || !is_absolute(uri_decode(reference.uri))) continue;
+        fail(path + ": " + reference.kind + " " + std::to_string(reference.index),
+             "absolute URI '" + one_line(reference.uri) + "' lies outside the scene's folder");
+    }
+}
+
 } // namespace
+
+std::string uri_decode(const std::string& uri) {
+    std::string decoded;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
+            std::isxdigit((unsigned char)uri[i + 2])) {
+            decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            decoded += uri[i];
+        }
+    }
+    return decoded;
+}
 
 std::vector<unsigned char> read_gltf_file(const std::string& path) {
     std::error_code error;
@@ -59,7 +100,10 @@ std::vector<unsigned char> read_gltf_file(const std::string& path) {
 tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned char>& bytes) {
     check_size(path, bytes.size());
     // The magic decides, not the extension: a .gltf may well hold GLB bytes.
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool binary = is_glb(path, bytes);
+    const std::string_view json =
+        binary ? glb_json_chunk(path, bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    check_references(path, scan_json(path, json));
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
     const auto length = static_cast<unsigned int>(bytes.size());
 
@@ -84,7 +128,8 @@ tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned 
     } catch (const std::exception& e) { // tinygltf's own checks can throw (std::vector::at)
         error = e.what();
     }
-    if (!parsed && !folder.refused.empty())
+    // Whether or not tinygltf went on without it (it does for images).
+    if (!folder.refused.empty())
         fail(path, "refers to " + folder.refused + ", which lies outside the scene's folder");
     if (!parsed) {
         const std::string detail = one_line(error);

@@ -6,6 +6,7 @@
 
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_float.h"
 
 namespace wf {
 namespace {
@@ -38,8 +39,7 @@ std::vector<PunctualLight> punctual_lights(const tinygltf::Model& model, const s
         }
         const glm::dvec3 intensity = color * l.intensity;
         for (int k = 0; k < 3; ++k)
-            if (!std::isfinite(intensity[k]) || intensity[k] < 0.0)
-                throw InputError(what + ": color x intensity must be finite and non-negative");
+            if (intensity[k] < 0.0) throw InputError(what + ": color x intensity must be non-negative");
 
         PunctualLight p{};
         if (l.type == "point") p.type = WF_PUNCTUAL_POINT;
@@ -52,8 +52,8 @@ std::vector<PunctualLight> punctual_lights(const tinygltf::Model& model, const s
             throw InputError(where + ": its transform collapses the light's direction");
         store3(p.position, glm::dvec3(nw.world[3]));
         store3(p.direction, glm::normalize(axis));
-        store3(p.intensity, intensity);
-        p.range = static_cast<float>(l.range);
+        for (int k = 0; k < 3; ++k) p.intensity[k] = to_float(intensity[k], what, "color x intensity");
+        p.range = to_float(l.range, what, "range");
         p.cos_inner = 1.0f;
         p.cos_outer = -1.0f;
         if (p.type == WF_PUNCTUAL_SPOT) {

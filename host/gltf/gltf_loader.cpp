@@ -10,10 +10,12 @@
 // camera among those the walk met.
 //
 // The parts, in that order: gltf_file.h (reading, parsing, the folder
-// sandbox), gltf_diagnostics.h (messages, extensions), gltf_materials.h and
-// gltf_textures.h, gltf_nodes.h (transforms, cameras), gltf_meshes.h and
-// gltf_accessors.h (primitives), gltf_lights.h. This file walks the nodes and
-// puts the scene together.
+// sandbox; with gltf_glb.h and gltf_json_scan.h, what is checked before
+// tinygltf parses), gltf_diagnostics.h (messages, extensions), gltf_float.h
+// (numbers as the renderer's floats), gltf_materials.h and gltf_textures.h,
+// gltf_nodes.h (transforms, cameras), gltf_meshes.h and gltf_accessors.h
+// (primitives), gltf_lights.h. This file walks the nodes and puts the scene
+// together.
 #include "gltf/gltf_loader.h"
 
 #include <map>
@@ -28,6 +30,7 @@
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"
 #include "gltf/gltf_file.h"
+#include "gltf/gltf_float.h"
 #include "gltf/gltf_lights.h"
 #include "gltf/gltf_materials.h"
 #include "gltf/gltf_meshes.h"
@@ -49,8 +52,7 @@ public:
         check_extensions(model_, path_, scene_.warnings);
         check_core_features(model_, scene_.warnings);
         convert_materials();
-        std::vector<bool> on_path(model_.nodes.size(), false);
-        for (int root : root_nodes()) visit(root, glm::dmat4(1.0), on_path);
+        walk_nodes();
         if (scene_.triangle_count() == 0) fail(path_, "the scene has no triangles");
         scene_.punctual_lights = punctual_lights(model_, visited_, path_);
         scene_.camera = choose_camera(options);
@@ -113,15 +115,52 @@ private:
         return roots;
     }
 
-    void visit(int node_index, const glm::dmat4& parent_world, std::vector<bool>& on_path) {
-        if (node_index < 0 || size_t(node_index) >= model_.nodes.size())
-            fail(path_, "node " + std::to_string(node_index) + " does not exist");
-        const auto index = size_t(node_index);
-        const tinygltf::Node& node = model_.nodes[index];
-        const std::string where = path_ + ": " + label("node", index, node.name);
-        if (on_path[index]) fail(where, "the node is its own ancestor");
+    // Depth first from each root, on a stack of our own: a file can chain
+    // nodes deeper than the call stack goes. glTF makes the hierarchy a forest
+    // (glTF 2.0, "Nodes and Hierarchy": no cycles, at most one parent), so a
+    // node is reached once; were a second parent allowed, a chain that lists
+    // each child twice would double the instances at every level.
+    void walk_nodes() {
+        struct Frame {
+            size_t node;
+            glm::dmat4 world;
+            size_t next_child = 0;
+        };
+        std::vector<Frame> path; // from the root to the node being walked
+        std::vector<bool> on_path(model_.nodes.size(), false);
+        std::vector<bool> reached(model_.nodes.size(), false);
+        const auto enter = [&](int node_index, const glm::dmat4& parent_world) {
+            if (node_index < 0 || size_t(node_index) >= model_.nodes.size())
+                fail(path_, "node " + std::to_string(node_index) + " does not exist");
+            const auto index = size_t(node_index);
+            const std::string where = path_ + ": " + label("node", index, model_.nodes[index].name);
+            if (on_path[index]) fail(where, "the node is its own ancestor");
+            if (reached[index]) fail(where, "the node is reached a second time: glTF gives a node one parent at most");
+            on_path[index] = reached[index] = true;
+            path.push_back({index, place(index, parent_world, where)});
+        };
+        for (int root : root_nodes()) {
+            enter(root, glm::dmat4(1.0));
+            while (!path.empty()) {
+                Frame& top = path.back();
+                const std::vector<int>& children = model_.nodes[top.node].children;
+                if (top.next_child == children.size()) {
+                    on_path[top.node] = false;
+                    path.pop_back();
+                } else {
+                    const glm::dmat4 parent_world = top.world; // enter() may move `top`
+                    enter(children[top.next_child++], parent_world);
+                }
+            }
+        }
+    }
 
+    // The node's world matrix, with its mesh instanced and its camera noted.
+    glm::dmat4 place(size_t index, const glm::dmat4& parent_world, const std::string& where) {
+        const tinygltf::Node& node = model_.nodes[index];
         const glm::dmat4 world = parent_world * local_transform(node, where);
+        // What the node places (mesh, camera, lights) is taken to float from here.
+        check_float_range(world, where, "world transform");
         visited_.push_back({index, world});
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
@@ -133,9 +172,7 @@ private:
                 fail(where, "camera " + std::to_string(node.camera) + " does not exist");
             cameras_.push_back({size_t(node.camera), world});
         }
-        on_path[index] = true;
-        for (int child : node.children) visit(child, world, on_path);
-        on_path[index] = false;
+        return world;
     }
 
     // Appends one instance of a mesh in world space. A mirroring transform

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_float.h"
 
 namespace wf {
 namespace {
@@ -39,8 +40,8 @@ glm::vec3 extension_color(const tinygltf::Material& material, const char* extens
     for (int c = 0; c < 3; ++c) {
         const tinygltf::Value& number = value.Get(c);
         const double x = number.IsNumber() ? number.GetNumberAsDouble() : -1.0;
-        if (!(x >= 0.0 && x <= 3.4e38)) fail(where, what + " must hold finite numbers >= 0");
-        color[c] = float(x);
+        if (!(x >= 0.0)) fail(where, what + " must hold numbers >= 0");
+        color[c] = to_float(x, where, what);
     }
     return color;
 }
@@ -95,9 +96,8 @@ SceneMaterial convert_material(const tinygltf::Material& material, size_t index,
         converted.base_color[c] = unit_factor(element_or(pbr.baseColorFactor, size_t(c), 1.0), where,
                                               "baseColorFactor");
         const double emission = element_or(material.emissiveFactor, size_t(c), 0.0) * strength;
-        if (!std::isfinite(emission) || emission < 0.0)
-            fail(where, "emission must be finite and non-negative");
-        converted.emission[c] = float(emission);
+        if (emission < 0.0) fail(where, "emission must be non-negative");
+        converted.emission[c] = to_float(emission, where, "emissiveFactor x emissiveStrength");
     }
     return converted;
 }

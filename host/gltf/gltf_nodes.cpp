@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_float.h"
 
 namespace wf {
 
@@ -60,7 +61,7 @@ SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& wor
     converted.up = glm::vec3(*up);
     converted.vertical_fov = float(yfov);
     converted.aspect =
-        camera.perspective.aspectRatio > 0.0 ? float(camera.perspective.aspectRatio) : 0.0f;
+        camera.perspective.aspectRatio > 0.0 ? to_float(camera.perspective.aspectRatio, where, "aspectRatio") : 0.0f;
     return converted;
 }
 

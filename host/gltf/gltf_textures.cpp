@@ -4,12 +4,12 @@
 
 #include <tiny_gltf.h>
 
-#include <cctype>
-#include <cmath>
 #include <filesystem>
 
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"
+#include "gltf/gltf_file.h"
+#include "gltf/gltf_float.h"
 
 namespace wf {
 namespace {
@@ -29,11 +29,9 @@ uint32_t wrap_mode(int wrap, const std::string& where, const char* axis) {
                     " is not a glTF wrap mode (10497, 33071 or 33648)");
 }
 
-double finite_number(const tinygltf::Value& value, const std::string& where, const char* what) {
+float float_number(const tinygltf::Value& value, const std::string& where, const char* what) {
     if (!value.IsNumber()) fail(where, std::string(what) + " is not a number");
-    const double number = value.GetNumberAsDouble();
-    if (!std::isfinite(number)) fail(where, std::string(what) + " is not finite");
-    return number;
+    return to_float(value.GetNumberAsDouble(), where, what);
 }
 
 // KHR_texture_transform's [u, v] pair `name`, or `fallback`.
@@ -42,22 +40,7 @@ void read_pair(const tinygltf::Value& transform, const char* name, float out[2],
     const tinygltf::Value& pair = transform.Get(name);
     if (!pair.IsArray() || pair.ArrayLen() != 2)
         fail(where, std::string("KHR_texture_transform ") + name + " must have 2 numbers");
-    for (int i = 0; i < 2; ++i) out[i] = float(finite_number(pair.Get(i), where, "KHR_texture_transform number"));
-}
-
-// A URI's %XX escapes decoded (tinygltf's own decoder is not exported).
-std::string uri_decode(const std::string& uri) {
-    std::string decoded;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
-            std::isxdigit((unsigned char)uri[i + 2])) {
-            decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-        } else {
-            decoded += uri[i];
-        }
-    }
-    return decoded;
+    for (int i = 0; i < 2; ++i) out[i] = float_number(pair.Get(i), where, "KHR_texture_transform number");
 }
 
 } // namespace
@@ -150,7 +133,7 @@ TextureRef GltfTextures::reference(int index, int tex_coord, const tinygltf::Val
         read_pair(transform, "scale", scale, where);
         const float rotation =
             transform.Has("rotation")
-                ? float(finite_number(transform.Get("rotation"), where, "KHR_texture_transform rotation"))
+                ? float_number(transform.Get("rotation"), where, "KHR_texture_transform rotation")
                 : 0.0f;
         const std::array<float, 6> matrix = texture_transform(offset[0], offset[1], rotation, scale[0], scale[1]);
         std::copy(matrix.begin(), matrix.end(), ref.transform);
@@ -203,18 +186,16 @@ void GltfTextures::convert(const tinygltf::Material& material, size_t index, Sce
     extension_slot(WF_TEXTURE_SHEEN_COLOR, "KHR_materials_sheen", "sheenColorTexture", true);
     extension_slot(WF_TEXTURE_SHEEN_ROUGHNESS, "KHR_materials_sheen", "sheenRoughnessTexture", false);
 
-    if (!std::isfinite(material.normalTexture.scale)) fail(where, "normalTexture.scale is not finite");
-    out.normal_scale = float(material.normalTexture.scale);
+    out.normal_scale = to_float(material.normalTexture.scale, where, "normalTexture.scale");
     const double alpha = pbr.baseColorFactor.size() == 4 ? pbr.baseColorFactor[3] : 1.0;
     if (!(alpha >= 0.0 && alpha <= 1.0)) fail(where, "baseColorFactor alpha is not in [0, 1]");
     out.base_alpha = float(alpha);
     if (material.alphaMode == "OPAQUE" || material.alphaMode.empty()) {
         out.alpha_mode = WF_ALPHA_OPAQUE;
     } else if (material.alphaMode == "MASK") {
-        if (!(material.alphaCutoff >= 0.0) || !std::isfinite(material.alphaCutoff))
-            fail(where, "alphaCutoff must be finite and non-negative");
+        if (!(material.alphaCutoff >= 0.0)) fail(where, "alphaCutoff must be non-negative");
         out.alpha_mode = WF_ALPHA_MASK;
-        out.alpha_cutoff = float(material.alphaCutoff);
+        out.alpha_cutoff = to_float(material.alphaCutoff, where, "alphaCutoff");
     } else if (material.alphaMode == "BLEND") {
         out.alpha_mode = WF_ALPHA_MASK;
         out.alpha_cutoff = 0.5f;

@@ -5,7 +5,8 @@
 // given their default sky, the BVH, and the device layout with its light
 // table. An InputError is the expected answer to a bad file; anything else
 // that escapes (another exception, a sanitizer report, a hang) is a bug.
-// Built by -DWF_FUZZ=ON with clang; run by scripts/fuzz.sh.
+// Built by -DWF_FUZZ=ON with clang; run by scripts/fuzz.sh. The inputs are
+// mutated by gltf_mutator.cpp: as JSON where they are glTF, else as bytes.
 
 #include <cstddef>
 #include <cstdint>

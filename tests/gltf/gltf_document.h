@@ -1,6 +1,6 @@
 // gltf_document.h — what the glTF loader tests share: GltfDocument, a glTF
 // file built in code (JSON open to tests that break it, one binary buffer
-// embedded or beside the file), the checks on what loading gives, and the
+// embedded or beside the file, or the whole as a GLB), the checks on what loading gives, and the
 // fixture that gives each test its own scratch folder; where the real assets are.
 #pragma once
 
@@ -110,9 +110,7 @@ public:
     }
 
     std::string write(const fs::path& path, BufferStorage storage = BufferStorage::embedded) const {
-        json document = gltf;
-        document["scene"] = 0;
-        document["scenes"] = json::array({{{"nodes", roots_}}});
+        json document = with_scene();
         if (!blob_.empty()) {
             std::string uri = "data:application/octet-stream;base64," + base64(blob_);
             if (storage == BufferStorage::side_file) {
@@ -127,7 +125,40 @@ public:
         return path.string();
     }
 
+    // The document as a GLB: a JSON chunk, then the buffer as its BIN chunk.
+    std::vector<unsigned char> glb() const {
+        json document = with_scene();
+        if (!blob_.empty()) document["buffers"] = json::array({{{"byteLength", blob_.size()}}});
+        std::string text = document.dump();
+        text.resize((text.size() + 3) / 4 * 4, ' ');
+        std::vector<unsigned char> bin = blob_;
+        bin.resize((bin.size() + 3) / 4 * 4, 0);
+        std::vector<unsigned char> out;
+        const auto word = [&out](size_t value) {
+            for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<unsigned char>(value >> shift));
+        };
+        out.insert(out.end(), {'g', 'l', 'T', 'F'});
+        word(2);
+        word(12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin.size()));
+        word(text.size());
+        out.insert(out.end(), {'J', 'S', 'O', 'N'});
+        out.insert(out.end(), text.begin(), text.end());
+        if (!bin.empty()) {
+            word(bin.size());
+            out.insert(out.end(), {'B', 'I', 'N', '\0'});
+            out.insert(out.end(), bin.begin(), bin.end());
+        }
+        return out;
+    }
+
 private:
+    json with_scene() const {
+        json document = gltf;
+        document["scene"] = 0;
+        document["scenes"] = json::array({{{"nodes", roots_}}});
+        return document;
+    }
+
     template <typename T>
     int add_accessor(const std::vector<T>& values, const char* type, size_t count) {
         blob_.resize((blob_.size() + 3) / 4 * 4, 0);

@@ -21,7 +21,7 @@ TEST_F(GltfLoaderTest, MalformedJsonIsNamed) {
 TEST_F(GltfLoaderTest, MalformedGlbIsNamed) {
     const std::string path =
         write_text("malformed.glb", std::string("glTF\x02\0\0\0", 8) + "not a real chunk header");
-    expect_mentions(load_error(path), {"malformed.glb", "cannot load GLB"});
+    expect_mentions(load_error(path), {"malformed.glb", "truncated GLB"});
 }
 
 TEST_F(GltfLoaderTest, MissingBufferFileIsNamed) {
