@@ -7,7 +7,8 @@
  * slot in the queue it consumes (include/wavefront/path_state.h), calls its
  * stage function (stages/), and appends the slot to the queue that comes
  * next. The stage functions are the megakernel's too (megakernel.cl);
- * host/integrator/wavefront_scheduler.cpp launches these. */
+ * host/integrator/wavefront_scheduler.cpp launches these. group_wavefront,
+ * last, runs the same stages inside each work-group, over local queues. */
 #include "kernel_params.h"
 #include "common/queue_push.h"
 #include "stages/generate.h"
@@ -108,3 +109,79 @@ __kernel void accumulate(WF_STAGE_PARAMS) {
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS, bucket, active, histogram);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_REGENERATE, slot, active, scratch);
 }
+
+/* --schedule group: the same stage functions, each work-group running them
+ * over its own WF_LOCAL_SIZE slots, stage by stage, with its queues in local
+ * memory. One launch takes one sample of every slot to its end, as the
+ * megakernel does, but each stage runs over the group's paths before the next
+ * starts (PoCL runs the code between two barriers as a loop over the
+ * work-items), so a stage's code and the group's path state stay in the
+ * core's caches instead of the whole pool streaming through memory at every
+ * stage. A slot's pixels and samples are the other schedules', and so are the
+ * bytes. Pushes are local atomics: a work-group runs on one thread. */
+#ifdef WF_LOCAL_SIZE
+typedef struct LocalQueue {
+    uint slots[WF_LOCAL_SIZE];
+    uint length;
+} LocalQueue;
+
+inline void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&q->length)] = slot; }
+
+__kernel void group_wavefront(WF_STAGE_PARAMS) {
+    WF_BIND_STAGE_ARGS;
+    __local LocalQueue extend, shadow, proceed, finish, next_extend;
+    __local uint scratch[WF_QUEUE_SCRATCH];
+    __local uint histogram[WF_PATH_LENGTH_BUCKETS];
+    const uint lid = get_local_id(0);
+    if (lid == 0) extend.length = shadow.length = proceed.length = finish.length = next_extend.length = 0u;
+    if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    const uint own = get_global_id(0);
+    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own)) local_push(&extend, own);
+    barrier(CLK_LOCAL_MEM_FENCE);
+    uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u; /* by the entries this work-item took */
+    for (uint extending; (extending = extend.length) > 0u;) {
+        if (lid < extending) intersect_path(&path, extend.slots[lid], &scene);
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid < extending) {
+            const uint slot = extend.slots[lid];
+            const uint outcome = shade_path(&path, &params, slot, &scene, &film);
+            ++closest_rays;
+            /* As in shade: a path with a shadow ray waits for it. */
+            if (outcome & WF_SHADE_SHADOW_RAY) local_push(&shadow, slot);
+            else local_push((outcome & WF_SHADE_CONTINUES) ? &proceed : &finish, slot);
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid < shadow.length) {
+            const uint slot = shadow.slots[lid];
+            ++shadow_rays;
+            local_push(trace_shadow_ray(&path, &params, slot, &scene, &film) ? &proceed : &finish, slot);
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid < proceed.length) {
+            const uint slot = proceed.slots[lid];
+            local_push(survives_roulette(&path, &params, slot) ? &next_extend : &finish, slot);
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid < finish.length) {
+            const uint slot = finish.slots[lid];
+            nonfinite += accumulate_path(&path, &params, slot, &film) ? 1u : 0u;
+            atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+        const uint continuing = next_extend.length;
+        if (lid < continuing) extend.slots[lid] = next_extend.slots[lid];
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid == 0) {
+            extend.length = continuing;
+            shadow.length = proceed.length = finish.length = next_extend.length = 0u;
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+    }
+    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite, scratch);
+    if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
+        atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
+}
+#endif

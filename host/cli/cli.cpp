@@ -145,8 +145,9 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->check(CLI::IsMember(names_of(kIntegratorNames)));
     f.schedule = schedule_name(s.schedule);
     f.schedule_flag = render.add_option("--schedule", f.schedule,
-                                        with_default("The wavefront's launch order: refill, passes (pbrt-v4) or "
-                                                     "fullest (Cycles X)", f.schedule))
+                                        with_default("The wavefront's launch order: refill, passes (pbrt-v4), "
+                                                     "fullest (Cycles X) or group (every stage inside each "
+                                                     "work-group, over local queues)", f.schedule))
                           ->check(CLI::IsMember(names_of(kScheduleNames)));
     f.sort_flag = render.add_flag("--sort-materials", s.sort_materials,
                                   with_default("Sort the paths by the material they hit before shading, wavefront "
@@ -309,6 +310,8 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
         throw InputError("render: --schedule orders the wavefront's stages; the megakernel has none");
     if (s.integrator == Integrator::Megakernel && s.sort_materials)
         throw InputError("render: --sort-materials sorts the wavefront's queue; the megakernel has none");
+    if (s.schedule == Schedule::Group && s.sort_materials)
+        throw InputError("render: --sort-materials sorts the wavefront's global queue; --schedule group has none");
     // A time budget or a target error alone leaves the sample count open.
     const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
     o.progress.max_spp = !f.spp_flag->count() && open_ended ? 0 : s.spp;

@@ -12,7 +12,7 @@ namespace {
 
 constexpr const char* kStageNames[STAGE_COUNT] = {"generate",   "intersect",        "shade",     "intersect_shadow",
                                                   "roulette",   "accumulate",       "sort_by_material",
-                                                  "megakernel"};
+                                                  "megakernel", "group_wavefront"};
 
 double event_seconds(const cl::Event& e) {
     const cl_ulong start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();
@@ -32,8 +32,8 @@ double RenderStats::pool_occupancy() const {
     size_t launches = 0;
     for (const CounterSnapshot& c : counter_reads) {
         if (c.closest_rays == 0) continue;
-        // A megakernel launch traces whole paths: its share of the pool is its samples.
-        sum += integrator == Integrator::Megakernel ? c.samples : c.closest_rays;
+        // A megakernel or group launch traces whole paths: its share of the pool is its samples.
+        sum += integrator == Integrator::Megakernel || schedule == Schedule::Group ? c.samples : c.closest_rays;
         ++launches;
     }
     return launches && pool_size ? sum / (double(launches) * pool_size) : 0.0;

@@ -40,6 +40,7 @@ enum Stage {
     STAGE_ACCUMULATE,
     STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.h)
     STAGE_MEGAKERNEL,
+    STAGE_GROUP, // --schedule group: every stage in one kernel (group_wavefront)
     STAGE_COUNT
 };
 

@@ -21,6 +21,7 @@ enum class Schedule {
     Refill,  // every stage once per iteration, freed slots refilled at once
     Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts
     Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
+    Group,   // every stage inside each work-group, over local queues: one launch a sample of each slot
 };
 
 // How the kernels append to queues and counters (kernels/common/queue_push.h),
@@ -28,9 +29,9 @@ enum class Schedule {
 enum class QueuePush { Group, Atomic, Scan };
 
 // Each choice's names, indexed by its enum or WF_* value.
-using ChoiceNames = std::array<const char*, 3>; // unused entries are null
+using ChoiceNames = std::array<const char*, 4>; // unused entries are null
 constexpr ChoiceNames kIntegratorNames = {"wavefront", "megakernel", nullptr};
-constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest"};
+constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest", "group"};
 constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 namespace wf {
 
@@ -11,6 +12,7 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
                                        const RenderSettings& settings)
     : PathIntegrator(device, scene, camera, settings) {
     for (int s = 0; s < kStageKernels; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
+    if (settings.schedule == Schedule::Group) group_ = cl::Kernel(program, stats_.stages[STAGE_GROUP].name);
     if (settings.sort_materials) {
         count_materials_ = cl::Kernel(program, "count_materials");
         scan_materials_ = cl::Kernel(program, "scan_materials");
@@ -39,6 +41,7 @@ void WavefrontScheduler::extend(uint32_t items) {
 void WavefrontScheduler::set_stage_args() {
     const StageArgs shared = stage_args();
     for (cl::Kernel& k : kernels_) wf::set_stage_args(k, shared);
+    if (settings_.schedule == Schedule::Group) wf::set_stage_args(group_, shared);
     if (settings_.sort_materials) {
         set_kernel_args(count_materials_, wf::set_stage_args(count_materials_, shared), key_counts_);
         set_kernel_args(scan_materials_, 0, key_counts_);
@@ -53,7 +56,8 @@ void WavefrontScheduler::render_to(uint32_t spp) {
     // Every slot goes to the regeneration queue; those whose pixels already
     // have `spp` samples start nothing and drop out at once.
     queue_every_slot();
-    if (settings_.schedule == Schedule::Fullest) run_fullest_first();
+    if (settings_.schedule == Schedule::Group) run_groups();
+    else if (settings_.schedule == Schedule::Fullest) run_fullest_first();
     else run_iterations(settings_.schedule == Schedule::Passes);
     device_.queue.finish();
     stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -89,6 +93,19 @@ void WavefrontScheduler::run_iterations(bool passes) {
         const auto counters = read_counters(WF_QUEUE_SHADOW); // the queues consumed above, and the statistics
         extending = counters[WF_QUEUE_EXTEND];
         regenerating = counters[WF_QUEUE_REGENERATE];
+    }
+}
+
+// Group: each launch finishes every sample it starts, as the megakernel's,
+// so the samples done are those restored and those traced.
+void WavefrontScheduler::run_groups() {
+    device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
+    const uint64_t wanted = uint64_t{params_.pixel_count} * params_.spp;
+    while (restored_samples_ + stats_.samples < wanted && !stopping()) {
+        PathIntegrator::launch(STAGE_GROUP, group_, pool_.size());
+        const uint64_t before = stats_.samples;
+        read_counters(WF_QUEUE_COUNT);
+        if (stats_.samples == before) throw std::logic_error("group_wavefront: a launch traced no sample");
     }
 }
 

@@ -14,7 +14,11 @@
 //             once every path of the pass has ended, so each iteration is one
 //             depth and the pool drains at the end of every pass;
 //   fullest — Cycles X's way: read the queue counters after every launch and
-//             launch the stage whose queue is longest.
+//             launch the stage whose queue is longest;
+//   group   — one kernel (group_wavefront) in which each work-group runs the
+//             stages over its own slots and local queues, one launch per
+//             sample of every slot, as the megakernel's: the working set of a
+//             stage stays in the core's caches.
 // --sort-materials adds a counting sort of the extension queue by material
 // between intersect and shade (kernels/stages/sort_by_material.h).
 #pragma once
@@ -37,6 +41,7 @@ private:
     void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
     void run_iterations(bool passes);
     void run_fullest_first();
+    void run_groups();
     // Intersect and shade over `items` paths of the extension queue, sorted
     // by material between them when the settings ask.
     void extend(uint32_t items);
@@ -45,6 +50,7 @@ private:
     std::array<cl::Kernel, kStageKernels> kernels_; // one per wavefront stage, by name
     // --sort-materials only: its kernels, the key counts and the sorted queue.
     cl::Kernel count_materials_, scan_materials_, scatter_materials_;
+    cl::Kernel group_; // --schedule group only
     cl::Buffer key_counts_, sorted_;
 };
 

@@ -43,8 +43,11 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
     const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
     std::string options = feature_defines(features);
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
-        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push)) +
-                   " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
+    // The scan and the group schedule size their local arrays by the launch's local size.
+    if (settings.queue_push == QueuePush::Scan ||
+        (settings.integrator == Integrator::Wavefront && settings.schedule == Schedule::Group))
+        options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
     return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
 }
 

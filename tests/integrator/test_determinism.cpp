@@ -66,7 +66,7 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     settings.pool_size = 500;
     const RenderOutput reference = render_file(scene, settings);
     EXPECT_GT(reference.summary.stats.shadow_rays, 0u);
-    for (const Schedule schedule : {Schedule::Passes, Schedule::Fullest}) {
+    for (const Schedule schedule : {Schedule::Passes, Schedule::Fullest, Schedule::Group}) {
         settings.schedule = schedule;
         const RenderOutput r = render_file(scene, settings);
         EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << schedule_name(schedule);
