@@ -74,6 +74,10 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
         EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
         EXPECT_EQ(r.summary.stats.path_lengths, reference.summary.stats.path_lengths) << schedule_name(schedule);
     }
+    settings.schedule = Schedule::Group; // its work-groups are its queues: another local size, the same bytes
+    settings.local_size = 128;
+    EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean)) << "group, local size 128";
+    settings.local_size = RenderSettings{}.local_size;
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
         settings.queue_push = push;
