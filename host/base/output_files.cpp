@@ -1,5 +1,6 @@
 // output_files.cpp — a probe file tells whether a folder takes new files,
-// whoever the user is (access() would say yes to root on a read-only mount).
+// whoever the user is (access() says yes to root even on a read-only mount);
+// a file already there must be one the user may replace.
 #include "base/output_files.h"
 
 #include <fstream>

@@ -103,7 +103,7 @@ void check_command_word(const CLI::App& app, const std::string& word, const std:
 
 // The render command's flags, each filling its field of `o`.
 struct RenderFlags {
-    std::string spp, light_sampling, hemisphere, sampler, integrator, schedule, queue_push, aov, config;
+    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, aov, config;
     CLI::Option *schedule_flag = nullptr, *sort_flag = nullptr, *spp_flag = nullptr;
 };
 
