@@ -32,11 +32,16 @@ double RenderStats::pool_occupancy() const {
     size_t launches = 0;
     for (const CounterSnapshot& c : counter_reads) {
         if (c.closest_rays == 0) continue;
-        // A megakernel or group launch traces whole paths: its share of the pool is its samples.
-        sum += integrator == Integrator::Megakernel || schedule == Schedule::Group ? c.samples : c.closest_rays;
+        // A launch that traces whole paths: its share of the pool is its samples.
+        sum += whole_path_stage() != STAGE_COUNT ? c.samples : c.closest_rays;
         ++launches;
     }
     return launches && pool_size ? sum / (double(launches) * pool_size) : 0.0;
+}
+
+Stage RenderStats::whole_path_stage() const {
+    if (integrator == Integrator::Megakernel) return STAGE_MEGAKERNEL;
+    return schedule == Schedule::Group ? STAGE_GROUP : STAGE_COUNT;
 }
 
 uint32_t default_pool_size(const std::string& device_type, Integrator integrator) {
@@ -131,6 +136,20 @@ void PathIntegrator::restore(const FilmState& film, const std::vector<uint32_t>&
     film_.restore(device_.queue, film);
     pool_.restore_samples_started(device_.queue, started);
     restored_samples_ = std::accumulate(started.begin(), started.end(), uint64_t{0});
+}
+
+void PathIntegrator::run_whole_paths(Stage stage, const cl::Kernel& kernel) {
+    device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
+    // Each launch finishes every sample it starts, so the samples done are
+    // those restored from a stopped render and those this render traced.
+    const uint64_t wanted = uint64_t{params_.pixel_count} * params_.spp;
+    while (restored_samples_ + stats_.samples < wanted && !stopping()) {
+        launch(stage, kernel, pool_.size());
+        const uint64_t before = stats_.samples;
+        read_counters(WF_QUEUE_COUNT);
+        if (stats_.samples == before)
+            throw std::logic_error(std::string(stats_.stages[stage].name) + ": a launch traced no sample");
+    }
 }
 
 void PathIntegrator::queue_every_slot() {

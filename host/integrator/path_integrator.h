@@ -75,6 +75,9 @@ struct RenderStats {
     double kernel_seconds() const;
     // Mean share of the pool traced by each launch of the closest-hit work.
     double pool_occupancy() const;
+    // The stage whose one kernel takes paths from the camera to the film (the
+    // megakernel, --schedule group), or STAGE_COUNT where each stage is a kernel.
+    Stage whole_path_stage() const;
 };
 
 // The default pool for a device of this type ("cpu", "gpu", ...; DeviceInfo::type)
@@ -126,6 +129,10 @@ protected:
     std::array<cl_uint, WF_COUNTER_COUNT> read_counters(uint32_t clear_from);
     // Every slot to the regeneration queue, the other counters to zero: the start of a round.
     void queue_every_slot();
+    // Launches `kernel`, which takes one sample of every slot that has samples
+    // left through its whole path (the megakernel, --schedule group), until
+    // every pixel has params_.spp samples or the render is stopped.
+    void run_whole_paths(Stage stage, const cl::Kernel& kernel);
     bool stopping() const { return settings_.stop && settings_.stop->load() != 0; }
 
     const OpenClDevice& device_;

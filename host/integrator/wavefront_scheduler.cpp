@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <stdexcept>
 
 namespace wf {
 
@@ -53,12 +52,15 @@ void WavefrontScheduler::render_to(uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
     params_.spp = spp;
     set_stage_args();
-    // Every slot goes to the regeneration queue; those whose pixels already
-    // have `spp` samples start nothing and drop out at once.
-    queue_every_slot();
-    if (settings_.schedule == Schedule::Group) run_groups();
-    else if (settings_.schedule == Schedule::Fullest) run_fullest_first();
-    else run_iterations(settings_.schedule == Schedule::Passes);
+    if (settings_.schedule == Schedule::Group) {
+        run_whole_paths(STAGE_GROUP, group_); // its queues are the work-groups' own
+    } else {
+        // Every slot goes to the regeneration queue; those whose pixels already
+        // have `spp` samples start nothing and drop out at once.
+        queue_every_slot();
+        if (settings_.schedule == Schedule::Fullest) run_fullest_first();
+        else run_iterations(settings_.schedule == Schedule::Passes);
+    }
     device_.queue.finish();
     stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -93,19 +95,6 @@ void WavefrontScheduler::run_iterations(bool passes) {
         const auto counters = read_counters(WF_QUEUE_SHADOW); // the queues consumed above, and the statistics
         extending = counters[WF_QUEUE_EXTEND];
         regenerating = counters[WF_QUEUE_REGENERATE];
-    }
-}
-
-// Group: each launch finishes every sample it starts, as the megakernel's,
-// so the samples done are those restored and those traced.
-void WavefrontScheduler::run_groups() {
-    device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
-    const uint64_t wanted = uint64_t{params_.pixel_count} * params_.spp;
-    while (restored_samples_ + stats_.samples < wanted && !stopping()) {
-        PathIntegrator::launch(STAGE_GROUP, group_, pool_.size());
-        const uint64_t before = stats_.samples;
-        read_counters(WF_QUEUE_COUNT);
-        if (stats_.samples == before) throw std::logic_error("group_wavefront: a launch traced no sample");
     }
 }
 

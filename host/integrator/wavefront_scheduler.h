@@ -41,7 +41,6 @@ private:
     void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
     void run_iterations(bool passes);
     void run_fullest_first();
-    void run_groups();
     // Intersect and shade over `items` paths of the extension queue, sorted
     // by material between them when the settings ask.
     void extend(uint32_t items);

@@ -64,9 +64,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << " (bounces per sample)\n";
     out << "stage              launches     seconds   share\n";
     for (int stage = 0; stage < STAGE_COUNT; ++stage) {
-        // One kernel runs every stage for the megakernel and the group schedule: its row alone.
-        const int single = megakernel ? STAGE_MEGAKERNEL : st.schedule == Schedule::Group ? STAGE_GROUP : -1;
-        if (single >= 0 ? stage != single : stage == STAGE_MEGAKERNEL || stage == STAGE_GROUP) continue;
+        // Where one kernel runs every stage (the megakernel, the group schedule), its row alone.
+        const Stage single = st.whole_path_stage();
+        if (single != STAGE_COUNT ? stage != single : stage == STAGE_MEGAKERNEL || stage == STAGE_GROUP) continue;
         const StageTime& t = st.stages[stage];
         out << "  " << std::left << std::setw(18) << t.name << std::right;
         if (t.launches == 0 && st.iterations > 0) { // a stage the scene cannot use
