@@ -101,10 +101,18 @@ void check_command_word(const CLI::App& app, const std::string& word, const std:
     throw InputError(context + "unknown command '" + word + "' (expected " + names + ")");
 }
 
+// --cache-dir, which render, cache warm and cache clear all take.
+void add_cache_dir(CLI::App& command, std::string& directory) {
+    command
+        .add_option("--cache-dir", directory,
+                    with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
+        ->type_name("DIR");
+}
+
 // The render command's flags, each filling its field of `o`.
 struct RenderFlags {
     std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, aov, config;
-    CLI::Option *schedule_flag = nullptr, *sort_flag = nullptr, *spp_flag = nullptr;
+    CLI::Option *schedule_flag = nullptr, *spp_flag = nullptr;
 };
 
 void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
@@ -149,9 +157,8 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                                                      "fullest (Cycles X) or group (every stage inside each "
                                                      "work-group, over local queues)", f.schedule))
                           ->check(CLI::IsMember(names_of(kScheduleNames)));
-    f.sort_flag = render.add_flag("--sort-materials", s.sort_materials,
-                                  with_default("Sort the paths by the material they hit before shading, wavefront "
-                                               "only", "off"));
+    render.add_flag("--sort-materials", s.sort_materials,
+                    with_default("Sort the paths by the material they hit before shading, wavefront only", "off"));
     f.queue_push = queue_push_name(s.queue_push);
     render.add_option("--queue-push", f.queue_push,
                       with_default("How kernels append to queues: group (one atomic per work-group), atomic (one "
@@ -197,9 +204,7 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->check(finite_number(true))
         ->needs(env)
         ->group(sampling);
-    render.add_option("--cache-dir", o.cache_dir,
-                      with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
-        ->type_name("DIR");
+    add_cache_dir(render, o.cache_dir);
     render.add_flag_function("--no-specialize", [&s](int64_t) { s.specialize = false; },
                     with_default("Compile the generic kernels, every feature on, instead of those for the scene's "
                                  "features", "off"));
@@ -323,14 +328,10 @@ void declare_cache(CLI::App& cache, CommandLine& cl) {
     warm->add_option("scenes", cl.cache.scenes, "glTF scenes")->required()->type_name("SCENE...");
     warm->add_option("--device", cl.cache.device,
                      with_default("OpenCL device: an index, cpu or gpu", "the first GPU, else the first device"));
-    warm->add_option("--cache-dir", cl.cache.directory,
-                     with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
-        ->type_name("DIR");
+    add_cache_dir(*warm, cl.cache.directory);
     warm->callback([&cl] { cl.command = Command::CacheWarm; });
     CLI::App* clear = cache.add_subcommand("clear", "Remove the compiled kernels kept on disk");
-    clear->add_option("--cache-dir", cl.cache.directory,
-                      with_default("Where compiled kernels are kept", "$XDG_CACHE_HOME/wavefront, else ~/.cache/wavefront"))
-        ->type_name("DIR");
+    add_cache_dir(*clear, cl.cache.directory);
     clear->callback([&cl] { cl.command = Command::CacheClear; });
 }
 
