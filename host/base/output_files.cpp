@@ -11,6 +11,14 @@
 
 namespace wf {
 
+bool folder_takes_new_files(const std::filesystem::path& folder) {
+    const std::filesystem::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
+    if (!std::ofstream(probe)) return false;
+    std::error_code ignored;
+    std::filesystem::remove(probe, ignored);
+    return true;
+}
+
 void check_can_write_file(const std::string& path) {
     namespace fs = std::filesystem;
     const fs::path target(path);
@@ -20,9 +28,7 @@ void check_can_write_file(const std::string& path) {
     if (fs::is_directory(target, ec)) throw InputError(path + ": is a folder, not a file");
     if (fs::exists(target, ec) && ::access(path.c_str(), W_OK) != 0)
         throw InputError(path + ": the file there is read-only");
-    const fs::path probe = temporary_beside(path);
-    if (!std::ofstream(probe)) throw InputError(path + ": cannot write in " + folder.string());
-    fs::remove(probe, ec);
+    if (!folder_takes_new_files(folder)) throw InputError(path + ": cannot write in " + folder.string());
 }
 
 std::filesystem::path temporary_beside(const std::string& path) {

@@ -9,6 +9,10 @@
 
 namespace wf {
 
+// Whether a new file can be made in `folder`, tried with a probe file that is
+// removed at once.
+bool folder_takes_new_files(const std::filesystem::path& folder);
+
 // Throws InputError naming `path` unless a file can be written there: its
 // folder exists and takes a new file, the path is not a folder, and a file
 // already there may be replaced.

@@ -4,11 +4,9 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-
-#include <unistd.h>
 
 #include "base/errors.h"
+#include "base/output_files.h"
 
 namespace wf {
 namespace {
@@ -44,11 +42,7 @@ std::string pocl_cache_problem() {
     else return "";
     std::error_code ec;
     fs::create_directories(folder, ec);
-    const fs::path probe = folder / (".wavefront-probe-" + std::to_string(::getpid()));
-    if (!ec && std::ofstream(probe)) {
-        fs::remove(probe, ec);
-        return "";
-    }
+    if (!ec && folder_takes_new_files(folder)) return "";
     return "PoCL cannot create its kernel cache in " + folder.string() + " (from " + from +
            "), so it offers no device: set POCL_CACHE_DIR to a writable folder";
 }
