@@ -76,11 +76,11 @@ private:
 };
 
 // What shapes the image, for every output's metadata and for --resume to
-// check: a partial render continues only under the same values. Without a
-// pool size, all the others.
-ImageOptions image_options(const RenderOptions& o, ImageSize size, std::optional<uint32_t> pool_size) {
+// check: a partial render continues only under the same values. All but the
+// pool size, which the renderer chooses and run_render() adds.
+ImageOptions image_options(const RenderOptions& o, ImageSize size) {
     const RenderSettings& s = o.settings;
-    ImageOptions options = {{"scene", canonical_path(o.scene)},
+    return {{"scene", canonical_path(o.scene)},
             {"scene-contents", file_fingerprint(o.scene)},
             {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
             {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
@@ -95,8 +95,6 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size, std::optional
             {"env-uniform", std::to_string(o.environment_uniform)},
             {"aov", s.bounce_layers ? "bounces" : "none"},
             {"version", WF_VERSION}};
-    if (pool_size) options.emplace_back("pool-size", std::to_string(*pool_size));
-    return options;
 }
 
 // What a partial render must share with this one to go on: every option but
@@ -163,10 +161,11 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
     // Every option but the pool size is checked before the long set-up; the
     // pool, which the renderer chooses, right after it.
+    ImageOptions shaping = image_options(options, size);
     std::optional<PartialRender> resumed;
     if (!options.resume.empty()) {
         resumed = read_partial_render(options.resume);
-        check_partial_options(*resumed, options.resume, resume_checks(image_options(options, size, std::nullopt)));
+        check_partial_options(*resumed, options.resume, resume_checks(shaping));
         const uint32_t held = resolve(resumed->film).min_samples;
         if (options.progress.max_spp && options.progress.max_spp <= held)
             throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
@@ -194,7 +193,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
-    const ImageOptions shaping = image_options(options, size, renderer.stats().pool_size);
+    shaping.emplace_back("pool-size", std::to_string(renderer.stats().pool_size));
     if (resumed) check_partial_options(*resumed, options.resume, resume_checks(shaping));
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
