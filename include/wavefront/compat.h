@@ -98,8 +98,8 @@ using std::sqrt;
 /* sin(pi x) and cos(pi x). The device's need no argument reduction (PoCL's
  * sin and cos always call one); the host's are sin and cos of the rounded
  * product, as the shared code computed before it had these. */
-inline float sinpi(float x) { return std::sin(3.14159265358979323846f * x); }
-inline float cospi(float x) { return std::cos(3.14159265358979323846f * x); }
+inline float sinpi(float x) { return std::sin(static_cast<float>(M_PI) * x); }
+inline float cospi(float x) { return std::cos(static_cast<float>(M_PI) * x); }
 inline uint32_t clz(uint32_t x) { return x == 0 ? 32u : static_cast<uint32_t>(__builtin_clz(x)); }
 
 /* Four lanes: GLM's arithmetic, and the built-ins it lacks. */
