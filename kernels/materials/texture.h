@@ -22,19 +22,15 @@
  *   neutral value for the factors it multiplies; the normal map's caller must
  *   test texture >= 0 itself;
  * - the result is finite, each channel in [0, 1].
- * Texels are RGBA8 (4 bytes each); sRGB decoding costs three pow() per texel
- * read, twelve per bilinear sample. */
+ * Texels are RGBA8 (4 bytes each); sRGB channels are decoded by a 256-entry
+ * table (materials/srgb_table.h), three lookups per texel read. */
 #ifndef WF_TEXTURE_H
 #define WF_TEXTURE_H
 
 #include "wavefront/scene_types.h"
+#include "materials/srgb_table.h"
 
 WF_DEVICE_BEGIN
-
-/* The sRGB transfer function's inverse (IEC 61966-2-1), for c in [0, 1]. */
-WF_INLINE float texture_srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 /* The texture coordinate set a TextureRef asks for. */
 WF_INLINE float2 texture_pick_uv(WF_GLOBAL const TextureRef* ref, float2 uv0, float2 uv1) {
@@ -81,13 +77,13 @@ WF_INLINE uint32_t texture_wrap_index(int32_t i, uint32_t wrap, uint32_t size) {
 WF_INLINE float4 texture_texel(WF_GLOBAL const TextureInfo* info, WF_GLOBAL const uint32_t* texels,
                                uint32_t x, uint32_t y) {
     const uint32_t bits = texels[info->offset + y * info->width + x];
-    float4 c = make_float4((float)(bits & 0xffu), (float)((bits >> 8) & 0xffu),
-                           (float)((bits >> 16) & 0xffu), (float)(bits >> 24)) *
-               (1.0f / 255.0f);
+    const float alpha = (float)(bits >> 24) * (1.0f / 255.0f);
     if (info->flags & WF_TEXTURE_SRGB)
-        c = make_float4(texture_srgb_to_linear(c.x), texture_srgb_to_linear(c.y),
-                        texture_srgb_to_linear(c.z), c.w);
-    return c;
+        return make_float4(srgb_to_linear_table[bits & 0xffu], srgb_to_linear_table[(bits >> 8) & 0xffu],
+                           srgb_to_linear_table[(bits >> 16) & 0xffu], alpha);
+    return make_float4((float)(bits & 0xffu), (float)((bits >> 8) & 0xffu), (float)((bits >> 16) & 0xffu), 0.0f) *
+               (1.0f / 255.0f) +
+           make_float4(0.0f, 0.0f, 0.0f, alpha);
 }
 
 /* The texture `ref` names at texture coordinate `uv` (the set ref->texcoord
