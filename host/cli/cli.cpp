@@ -154,8 +154,9 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     f.schedule = schedule_name(s.schedule);
     f.schedule_flag = render.add_option("--schedule", f.schedule,
                                         with_default("The wavefront's launch order: refill, passes (pbrt-v4), "
-                                                     "fullest (Cycles X) or group (every stage inside each "
-                                                     "work-group, over local queues)", f.schedule))
+                                                     "fullest (Cycles X), group (every stage inside each "
+                                                     "work-group, over local queues) or auto (group on a CPU, "
+                                                     "refill elsewhere or with --sort-materials)", f.schedule))
                           ->check(CLI::IsMember(names_of(kScheduleNames)));
     render.add_flag("--sort-materials", s.sort_materials,
                     with_default("Sort the paths by the material they hit before shading, wavefront only", "off"));

@@ -48,6 +48,10 @@ uint32_t default_pool_size(const std::string& device_type, Integrator integrator
     return device_type == "cpu" && integrator == Integrator::Wavefront ? kDefaultCpuPoolSize : kDefaultGpuPoolSize;
 }
 
+Schedule default_schedule(const std::string& device_type, bool sort_materials) {
+    return device_type == "cpu" && !sort_materials ? Schedule::Group : Schedule::Refill;
+}
+
 uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note) {
     const uint32_t wanted = requested ? requested : default_size;
     const uint32_t size = std::min(wanted, pixel_count);

@@ -84,6 +84,12 @@ struct RenderStats {
 // and integrator.
 uint32_t default_pool_size(const std::string& device_type, Integrator integrator);
 
+// The schedule a wavefront render runs when none is asked for: on a CPU,
+// group, whose stages keep a work-group's paths in one core's caches (1.2-1.5x
+// refill, bench/results/cpu-wavefront.md); elsewhere, and to sort by material
+// (which needs the global queue), refill.
+Schedule default_schedule(const std::string& device_type, bool sort_materials);
+
 // The pool size used for a render: the requested one (or `default_size`),
 // never more than the pixel count, since each slot owns whole pixels. `note`
 // says why when it differs from the request.

@@ -22,6 +22,7 @@ enum class Schedule {
     Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts
     Fullest, // Cycles X: the stage whose queue the device counters show fullest, one at a time
     Group,   // every stage inside each work-group, over local queues: one launch a sample of each slot
+    Auto,    // chosen by the renderer for the device: default_schedule() (path_integrator.h)
 };
 
 // How the kernels append to queues and counters (kernels/common/queue_push.h),
@@ -29,9 +30,9 @@ enum class Schedule {
 enum class QueuePush { Group, Atomic, Scan };
 
 // Each choice's names, indexed by its enum or WF_* value.
-using ChoiceNames = std::array<const char*, 4>; // unused entries are null
+using ChoiceNames = std::array<const char*, 5>; // unused entries are null
 constexpr ChoiceNames kIntegratorNames = {"wavefront", "megakernel", nullptr};
-constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest", "group"};
+constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest", "group", "auto"};
 constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
@@ -69,7 +70,7 @@ struct RenderSettings {
     bool specialize = true;     // compile the kernels for the scene's features (host/device/scene_features.h)
     std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
     Integrator integrator = Integrator::Wavefront;
-    Schedule schedule = Schedule::Refill; // for the wavefront integrator
+    Schedule schedule = Schedule::Auto; // for the wavefront integrator; the renderer resolves Auto
     QueuePush queue_push = QueuePush::Group;
     bool sort_materials = false; // reorder the extension queue by material before shade
     // While it holds non-zero, no sample starts: the paths in flight end and

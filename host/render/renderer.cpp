@@ -31,6 +31,12 @@ void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t po
                          " allocates at most " + mib(device.max_allocation) + " at once");
 }
 
+// The schedule asked for, or with Schedule::Auto the device's default.
+Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) {
+    return settings.schedule == Schedule::Auto ? default_schedule(device.type, settings.sort_materials)
+                                               : settings.schedule;
+}
+
 } // namespace
 
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
@@ -46,7 +52,7 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
         options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
     // The scan and the group schedule size their local arrays by the launch's local size.
     if (settings.queue_push == QueuePush::Scan ||
-        (settings.integrator == Integrator::Wavefront && settings.schedule == Schedule::Group))
+        (settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group))
         options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
     return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
 }
@@ -55,6 +61,7 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
                    const RenderSettings& requested)
     : device_(device) {
     RenderSettings settings = requested;
+    settings.schedule = schedule_for(device.info, settings);
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
     settings.pool_size = choose_pool_size(requested.pool_size, default_pool_size(device.info.type, requested.integrator),

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gltf/gltf_loader.h"
-#include "render/renderer.h"
+#include "integrator/path_integrator.h"
 #include "render/renderer.h"
 #include "support/test_support.h"
 
@@ -20,8 +20,9 @@ RenderOutput render_file(const std::string& path, RenderSettings settings, Image
     return render_scene(test::cpu_device(), scene, *scene.camera, size, settings);
 }
 
-Image render_cornell(uint32_t pool_size, uint32_t local_size, uint32_t seed) {
+Image render_cornell(uint32_t pool_size, uint32_t local_size, uint32_t seed, Schedule schedule = Schedule::Refill) {
     RenderSettings settings;
+    settings.schedule = schedule;
     settings.seed = seed;
     settings.pool_size = pool_size;
     settings.local_size = local_size;
@@ -38,6 +39,9 @@ TEST(Determinism, PoolAndLocalSizeDoNotChangeOneBit) {
     EXPECT_TRUE(same_bytes(reference, render_cornell(777, 64, 3))); // does not divide 1200
     EXPECT_TRUE(same_bytes(reference, render_cornell(1200, 32, 3)));
     EXPECT_FALSE(same_bytes(reference, render_cornell(1200, 64, 4))); // the seed does matter
+    // The group schedule, whose work-groups are its queues (and the default on a CPU).
+    EXPECT_TRUE(same_bytes(reference, render_cornell(777, 64, 3, Schedule::Group)));
+    EXPECT_TRUE(same_bytes(reference, render_cornell(256, 32, 3, Schedule::Group)));
 }
 
 // Stopping to look at the film between rounds changes nothing: a pixel's
@@ -64,6 +68,7 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     RenderSettings settings;
     settings.seed = 5;
     settings.pool_size = 500;
+    settings.schedule = Schedule::Refill;
     const RenderOutput reference = render_file(scene, settings);
     EXPECT_GT(reference.summary.stats.shadow_rays, 0u);
     for (const Schedule schedule : {Schedule::Passes, Schedule::Fullest, Schedule::Group}) {
@@ -97,6 +102,20 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ScheduleDeterminism,
                          ::testing::Values("cornell-box.gltf", "cornell-teapot.gltf", "cornell-glass.gltf"));
+
+// With no schedule asked for, the renderer picks the device's: group on a
+// CPU (its stages keep a work-group's paths in one core's caches), refill on
+// a GPU and wherever the material sort needs the global queue.
+TEST(Schedules, TheDefaultIsGroupOnACpuAndRefillElsewhere) {
+    EXPECT_EQ(default_schedule("cpu", false), Schedule::Group);
+    EXPECT_EQ(default_schedule("cpu", true), Schedule::Refill);
+    EXPECT_EQ(default_schedule("gpu", false), Schedule::Refill);
+    RenderSettings settings;
+    ASSERT_EQ(settings.schedule, Schedule::Auto);
+    EXPECT_EQ(render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings).summary.stats.schedule, Schedule::Group);
+    settings.sort_materials = true;
+    EXPECT_EQ(render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings).summary.stats.schedule, Schedule::Refill);
+}
 
 // The passes schedule starts no sample while a path of the pass is in
 // flight: whenever generate refills slots, no path was left to extend.
