@@ -36,10 +36,15 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << std::setprecision(2);
     out << "samples    " << st.samples << " at " << per_second(st.samples, st.seconds) * 1e-6 << " M/s; mean path "
         << per_second(st.closest_rays, st.samples) << " segments; non-finite samples " << st.nonfinite_samples << "\n";
+    // Rays a second inside the intersect kernels, where there are such kernels
+    // (a kernel that runs whole paths has no intersect time of its own).
     out << "rays       closest " << st.closest_rays << " (" << per_second(st.closest_rays, st.seconds) * 1e-6
-        << " M/s wall, " << per_second(st.closest_rays, closest_kernel) * 1e-6 << " M/s in intersect), shadow "
-        << st.shadow_rays << " (" << per_second(st.shadow_rays, st.seconds) * 1e-6 << " M/s wall, "
-        << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow)\n";
+        << " M/s wall";
+    if (closest_kernel > 0.0) out << ", " << per_second(st.closest_rays, closest_kernel) * 1e-6 << " M/s in intersect";
+    out << "), shadow " << st.shadow_rays << " (" << per_second(st.shadow_rays, st.seconds) * 1e-6 << " M/s wall";
+    if (shadow_kernel > 0.0)
+        out << ", " << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow";
+    out << ")\n";
     out << "memory     " << std::setprecision(1) << s.device_bytes / 1048576.0 << " MiB on the device; pool "
         << st.pool_size << " paths of " << PathPool::state_bytes_per_path() << " bytes, queues "
         << PathPool::bytes_per_path() - PathPool::state_bytes_per_path() << " bytes a path; BVH and triangles "
