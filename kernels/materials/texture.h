@@ -77,13 +77,13 @@ WF_INLINE uint32_t texture_wrap_index(int32_t i, uint32_t wrap, uint32_t size) {
 WF_INLINE float4 texture_texel(WF_GLOBAL const TextureInfo* info, WF_GLOBAL const uint32_t* texels,
                                uint32_t x, uint32_t y) {
     const uint32_t bits = texels[info->offset + y * info->width + x];
-    const float alpha = (float)(bits >> 24) * (1.0f / 255.0f);
+    const float4 c = make_float4((float)(bits & 0xffu), (float)((bits >> 8) & 0xffu),
+                                 (float)((bits >> 16) & 0xffu), (float)(bits >> 24)) *
+                     (1.0f / 255.0f);
     if (info->flags & WF_TEXTURE_SRGB)
         return make_float4(srgb_to_linear_table[bits & 0xffu], srgb_to_linear_table[(bits >> 8) & 0xffu],
-                           srgb_to_linear_table[(bits >> 16) & 0xffu], alpha);
-    return make_float4((float)(bits & 0xffu), (float)((bits >> 8) & 0xffu), (float)((bits >> 16) & 0xffu), 0.0f) *
-               (1.0f / 255.0f) +
-           make_float4(0.0f, 0.0f, 0.0f, alpha);
+                           srgb_to_linear_table[(bits >> 16) & 0xffu], c.w);
+    return c;
 }
 
 /* The texture `ref` names at texture coordinate `uv` (the set ref->texcoord
