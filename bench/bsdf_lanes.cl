@@ -52,9 +52,9 @@ __kernel void general_eval(METAL_ARGS) {
         const TYPE lambda_i = 0.5f * a2t2_i / (1.0f + sqrt(1.0f + a2t2_i));                                       \
         const TYPE g = 1.0f / (1.0f + lambda_o + lambda_i);                                                       \
         const TYPE pdf_wm = 1.0f / (1.0f + lambda_o) * fmax(0.0f, dot_o) * d / fabs(oz);                          \
-        const TYPE m = 1.0f - fmin(fabs(dot_o), 1.0f), m2 = m * m, s = m2 * m2 * m;                                           \
-        const OK_TYPE ok = (oz * iz > 0.0f) & (len2 > 0.0f) & (dot_o * oz > 0.0f) &                                \
-                            ((ix * mx + iy * my + iz * mz) * iz > 0.0f);                                      \
+        const TYPE m = 1.0f - fmin(fabs(dot_o), 1.0f), m2 = m * m, s = m2 * m2 * m;                               \
+        const OK_TYPE ok = (oz * iz > 0.0f) & (len2 > 0.0f) & (dot_o * oz > 0.0f) &                               \
+                            ((ix * mx + iy * my + iz * mz) * iz > 0.0f);                                          \
         const TYPE w = select((TYPE)(0.0f), d * g / (4.0f * fabs(oz) * fabs(iz)), ok);                            \
         fr = (p.base_color.x + (1.0f - p.base_color.x) * s) * w;                                                  \
         fg = (p.base_color.y + (1.0f - p.base_color.y) * s) * w;                                                  \

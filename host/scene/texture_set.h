@@ -6,7 +6,7 @@
 //
 // Why RGBA8, 4 bytes a texel: DamagedHelmet's five 2048² images take 80 MiB
 // so, where float4 would take 320 MiB; the kernels decode a texel with a few
-// shifts (and pow for sRGB). 16-bit images lose their low bits.
+// shifts (and a table lookup for sRGB). 16-bit images lose their low bits.
 #pragma once
 
 #include <array>
