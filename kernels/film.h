@@ -7,7 +7,7 @@
 #include "wavefront/compat.h"
 #include "wavefront/film_buffers.h"
 
-#define WF_FILM_MEMBER(type, name, what) __global type* name;
+#define WF_FILM_MEMBER(type, name, extent, what) __global type* name;
 typedef struct FilmBuffers {
     WF_FILM_BUFFERS(WF_FILM_MEMBER)
 } FilmBuffers;

@@ -19,10 +19,10 @@
  * shadow them. */
 #define WF_PATH_PARAM(type, name, what) __global type* path_##name,
 #define WF_SCENE_PARAM(type, name, what) __global const type* scene_##name,
-#define WF_FILM_PARAM(type, name, what) __global type* film_##name,
+#define WF_FILM_PARAM(type, name, extent, what) __global type* film_##name,
 #define WF_PATH_ARG(type, name, what) path_##name,
 #define WF_SCENE_ARG(type, name, what) scene_##name,
-#define WF_FILM_ARG(type, name, what) film_##name,
+#define WF_FILM_ARG(type, name, extent, what) film_##name,
 
 #define WF_STAGE_PARAMS                                                                            \
     WF_PATH_STATE(WF_PATH_PARAM) WF_SCENE_BUFFERS(WF_SCENE_PARAM) WF_FILM_BUFFERS(WF_FILM_PARAM)   \

@@ -38,22 +38,22 @@ inline bool shadow_then_continues(float4 shadow_radiance) {
     return (as_uint(shadow_radiance.w) & WF_SHADOW_THEN_CONTINUE) != 0u;
 }
 
-/* Slot i owns pixels i, i + pool, i + 2·pool, ... and takes them in turn, a
- * sample of each: its n-th sample (from 0) is sample n / owned of pixel
- * i + (n % owned)·pool. */
+/* Of the traced pixels, from `first`, slot i owns first + i, first + i + pool,
+ * first + i + 2·pool, ... and takes them in turn, a sample of each: its n-th
+ * sample (from 0) is sample n / owned of pixel first + i + (n % owned)·pool. */
 typedef struct PathSample {
     uint pixel;
     uint sample; /* its index within the pixel */
 } PathSample;
 
 inline uint pixels_owned(const RenderParams* params, uint slot) {
-    return (params->pixel_count - 1u - slot) / params->pool_size + 1u;
+    return (params->traced_pixels - 1u - slot) / params->pool_size + 1u;
 }
 
 inline PathSample nth_sample(const RenderParams* params, uint slot, uint n) {
     const uint owned = pixels_owned(params, slot);
     PathSample s;
-    s.pixel = slot + (n % owned) * params->pool_size;
+    s.pixel = params->first_pixel + slot + (n % owned) * params->pool_size;
     s.sample = n / owned;
     return s;
 }

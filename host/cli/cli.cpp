@@ -135,7 +135,8 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--seed", s.seed, with_default("Random seed; the same seed and device give the same bytes", s.seed))
         ->check(whole_number(0, UINT32_MAX));
     render.add_option("--device", o.device,
-                      with_default("OpenCL device: an index from `wavefront devices`, cpu or gpu",
+                      with_default("OpenCL device: an index from `wavefront devices`, cpu or gpu; or several, "
+                                   "comma-separated (0,2), or all, sharing the render unit by unit",
                                    "the first GPU, else the first device"));
     render.add_option("--pool-size", s.pool_size,
                       with_default("Paths in flight, at most the pixel count",

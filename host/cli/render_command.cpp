@@ -76,8 +76,8 @@ private:
 };
 
 // What shapes the image, for every output's metadata and for --resume to
-// check: a partial render continues only under the same values. All but the
-// pool size, which the renderer chooses and run_render() adds.
+// check: a partial render continues only under the same values. The pool and
+// the devices are not among them: they change no byte (renderer.h).
 ImageOptions image_options(const RenderOptions& o, ImageSize size) {
     const RenderSettings& s = o.settings;
     return {{"scene", canonical_path(o.scene)},
@@ -159,8 +159,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
     if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
-    // Every option but the pool size is checked before the long set-up; the
-    // pool, which the renderer chooses, right after it.
+    // Checked before the long set-up.
     ImageOptions shaping = image_options(options, size);
     std::optional<PartialRender> resumed;
     if (!options.resume.empty()) {
@@ -182,7 +181,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
                              "x" + std::to_string(size.height));
     }
 
-    const OpenClDevice device = open_device(options.device);
+    const std::vector<OpenClDevice> devices = open_devices(options.device);
+    std::vector<const OpenClDevice*> chosen;
+    for (const OpenClDevice& d : devices) chosen.push_back(&d);
     RenderSettings settings = options.settings;
     settings.cache_dir = cache_directory(options.cache_dir);
     settings.stop = &install_interrupt_handlers();
@@ -190,11 +191,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const bool terminal = ::isatty(STDERR_FILENO);
     if (terminal && !options.quiet)
         log << "building the render: BVH, kernels (cache " << settings.cache_dir << ")..." << std::flush;
-    Renderer renderer(device, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
+    Renderer renderer(chosen, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
-    shaping.emplace_back("pool-size", std::to_string(renderer.stats().pool_size));
-    if (resumed) check_partial_options(*resumed, options.resume, resume_checks(shaping));
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;
@@ -202,7 +201,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.checkpoint_every > 0.0 && progress.report_every == 0.0) progress.report_every = options.checkpoint_every;
 
     ImageMetadata metadata;
-    metadata.device = device.info.name;
+    for (const OpenClDevice& d : devices)
+        metadata.device += (metadata.device.empty() ? "" : ", ") + d.info.name;
     metadata.seed = options.settings.seed;
     metadata.scene = canonical_path(options.scene);
     metadata.options = shaping;

@@ -1,6 +1,7 @@
 // opencl_device.cpp — platform and device enumeration through the ICD loader.
 #include "device/opencl_device.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -91,15 +92,16 @@ std::vector<DeviceInfo> list_devices() {
     return result;
 }
 
-DeviceInfo choose_device(const std::string& spec) {
-    const std::vector<DeviceInfo> devices = list_devices();
+namespace {
+
+DeviceInfo choose_from(const std::vector<DeviceInfo>& devices, const std::string& spec) {
     if (spec.empty()) {
         for (const DeviceInfo& d : devices)
             if (d.type == "gpu") return d;
         return devices.front();
     }
     if (is_index(spec)) {
-        const size_t i = std::stoul(spec);
+        const size_t i = spec.size() < 9 ? std::stoul(spec) : devices.size();
         if (i < devices.size()) return devices[i];
         throw InputError("--device " + spec + ": no such device (there are " +
                          std::to_string(devices.size()) + "; see `wavefront devices`)");
@@ -110,12 +112,42 @@ DeviceInfo choose_device(const std::string& spec) {
                      "see `wavefront devices`)");
 }
 
-OpenClDevice open_device(const std::string& spec) {
+OpenClDevice open(const DeviceInfo& info) {
     OpenClDevice d;
-    d.info = choose_device(spec);
+    d.info = info;
     d.context = cl::Context(d.info.device);
     d.queue = cl::CommandQueue(d.context, d.info.device, CL_QUEUE_PROFILING_ENABLE);
     return d;
+}
+
+} // namespace
+
+DeviceInfo choose_device(const std::string& spec) { return choose_from(list_devices(), spec); }
+
+std::vector<DeviceInfo> choose_devices(const std::string& spec) {
+    const std::vector<DeviceInfo> devices = list_devices();
+    if (spec == "all") return devices;
+    std::vector<DeviceInfo> chosen;
+    size_t from = 0;
+    do {
+        const size_t comma = std::min(spec.find(',', from), spec.size());
+        if (comma == from && spec.size() > 0) throw InputError("--device " + spec + ": an empty entry in the list");
+        const DeviceInfo d = choose_from(devices, spec.substr(from, comma - from));
+        for (const DeviceInfo& c : chosen)
+            if (c.index == d.index)
+                throw InputError("--device " + spec + ": device " + std::to_string(d.index) + " is named twice");
+        chosen.push_back(d);
+        from = comma + 1;
+    } while (from <= spec.size());
+    return chosen;
+}
+
+OpenClDevice open_device(const std::string& spec) { return open(choose_device(spec)); }
+
+std::vector<OpenClDevice> open_devices(const std::string& spec) {
+    std::vector<OpenClDevice> opened;
+    for (const DeviceInfo& d : choose_devices(spec)) opened.push_back(open(d));
+    return opened;
 }
 
 } // namespace wf

@@ -30,6 +30,10 @@ std::vector<DeviceInfo> list_devices();
 // `spec` is empty (the first GPU, else the first device), an index from
 // list_devices(), or a type: "cpu", "gpu". Throws InputError when nothing matches.
 DeviceInfo choose_device(const std::string& spec);
+// `spec` is "all", or one or more of choose_device()'s, separated by commas
+// ("0,2", "gpu,cpu"). Throws InputError when one matches nothing or a device
+// is named twice.
+std::vector<DeviceInfo> choose_devices(const std::string& spec);
 
 struct OpenClDevice {
     DeviceInfo info;
@@ -38,5 +42,6 @@ struct OpenClDevice {
 };
 
 OpenClDevice open_device(const std::string& spec);
+std::vector<OpenClDevice> open_devices(const std::string& spec);
 
 } // namespace wf

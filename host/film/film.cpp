@@ -1,69 +1,95 @@
 // film.cpp — buffers are zeroed on creation; a read resolves the sums in
-// double, adding each sum's compensation to it.
+// double, adding each sum's compensation to it. Every transfer walks
+// WF_FILM_BUFFERS, so a buffer added there moves with the rest.
 #include "film/film.h"
 
 #include <algorithm>
+#include <stdexcept>
+
+// Planes of one element per pixel in a buffer of each extent (film_buffers.h).
+#define WF_FILM_PLANES_PIXEL(bounce_layers) 1u
+#define WF_FILM_PLANES_LAYER(bounce_layers) (bounce_layers)
 
 namespace wf {
 namespace {
 
-cl::Buffer zeroed(const cl::Context& context, const cl::CommandQueue& queue, size_t bytes) {
-    cl::Buffer b(context, CL_MEM_READ_WRITE, bytes);
-    queue.enqueueFillBuffer(b, cl_uchar{0}, 0, bytes);
-    return b;
+template <typename T>
+void read_planes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t pixels, uint32_t planes,
+                 uint32_t first, uint32_t count, std::vector<T>& into) {
+    if (into.size() != pixels * planes) into.assign(pixels * planes, T{});
+    for (size_t plane = 0; plane < planes; ++plane) {
+        const size_t at = plane * pixels + first;
+        queue.enqueueReadBuffer(buffer, CL_FALSE, at * sizeof(T), count * sizeof(T), into.data() + at);
+    }
 }
 
-std::vector<cl_float4> read_float4(const cl::CommandQueue& queue, const cl::Buffer& b, size_t count) {
-    std::vector<cl_float4> v(count);
-    queue.enqueueReadBuffer(b, CL_TRUE, 0, count * sizeof(cl_float4), v.data());
-    return v;
+template <typename T>
+void write_planes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t pixels, uint32_t planes,
+                  uint32_t first, uint32_t count, const std::vector<T>& from) {
+    if (from.empty() && planes != 1) return; // layers a state does not keep
+    if (from.size() != pixels * planes) throw std::logic_error("a film state of another size");
+    for (size_t plane = 0; plane < planes; ++plane) {
+        const size_t at = plane * pixels + first;
+        queue.enqueueWriteBuffer(buffer, CL_FALSE, at * sizeof(T), count * sizeof(T), from.data() + at);
+    }
 }
 
 } // namespace
 
 size_t Film::bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers) {
     const size_t pixels = size_t{width} * height;
-    return pixels * (4 * sizeof(cl_float4) + sizeof(cl_uint)) +
-           std::max<size_t>(1, pixels * bounce_layers) * 2 * sizeof(cl_float4);
+    size_t bytes = 0;
+#define WF_FILM_BYTES(type, name, extent, what) \
+    bytes += std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers)) * sizeof(film_element::type);
+    WF_FILM_BUFFERS(WF_FILM_BYTES)
+#undef WF_FILM_BYTES
+    return bytes;
 }
 
 Film::Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width_, uint32_t height_,
            uint32_t bounce_layers_)
     : width(width_), height(height_), bounce_layers(bounce_layers_) {
     const size_t pixels = size_t{width} * height;
-    sum = zeroed(context, queue, pixels * sizeof(cl_float4));
-    compensation = zeroed(context, queue, pixels * sizeof(cl_float4));
-    sum_squares = zeroed(context, queue, pixels * sizeof(cl_float4));
-    squares_compensation = zeroed(context, queue, pixels * sizeof(cl_float4));
-    samples = zeroed(context, queue, pixels * sizeof(cl_uint));
-    const size_t layer_elements = std::max<size_t>(1, pixels * bounce_layers);
-    layers = zeroed(context, queue, layer_elements * sizeof(cl_float4));
-    layer_compensation = zeroed(context, queue, layer_elements * sizeof(cl_float4));
+#define WF_FILM_ALLOCATE(type, name, extent, what)                                                           \
+    {                                                                                                       \
+        const size_t bytes =                                                                                \
+            std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers)) * sizeof(film_element::type); \
+        name = cl::Buffer(context, CL_MEM_READ_WRITE, bytes);                                               \
+        queue.enqueueFillBuffer(name, cl_uchar{0}, 0, bytes);                                               \
+    }
+    WF_FILM_BUFFERS(WF_FILM_ALLOCATE)
+#undef WF_FILM_ALLOCATE
+}
+
+void Film::read_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, FilmState& st) const {
+    const size_t pixels = size_t{width} * height;
+    st.width = width;
+    st.height = height;
+    st.bounce_layers = bounce_layers;
+#define WF_FILM_READ(type, name, extent, what) \
+    read_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers), first, count, st.name);
+    WF_FILM_BUFFERS(WF_FILM_READ)
+#undef WF_FILM_READ
+    queue.finish();
+}
+
+void Film::write_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, const FilmState& st) const {
+    const size_t pixels = size_t{width} * height;
+    if (st.width != width || st.height != height) throw std::logic_error("a film state of another size");
+#define WF_FILM_WRITE(type, name, extent, what) \
+    write_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers), first, count, st.name);
+    WF_FILM_BUFFERS(WF_FILM_WRITE)
+#undef WF_FILM_WRITE
+    queue.finish();
 }
 
 FilmState Film::state(const cl::CommandQueue& queue) const {
-    const size_t pixels = size_t{width} * height;
     FilmState st;
-    st.width = width;
-    st.height = height;
-    st.sum = read_float4(queue, sum, pixels);
-    st.compensation = read_float4(queue, compensation, pixels);
-    st.sum_squares = read_float4(queue, sum_squares, pixels);
-    st.squares_compensation = read_float4(queue, squares_compensation, pixels);
-    st.samples.resize(pixels);
-    queue.enqueueReadBuffer(samples, CL_TRUE, 0, pixels * sizeof(cl_uint), st.samples.data());
+    read_pixels(queue, 0, width * height, st);
     return st;
 }
 
-void Film::restore(const cl::CommandQueue& queue, const FilmState& st) const {
-    const size_t pixels = size_t{width} * height;
-    queue.enqueueWriteBuffer(sum, CL_TRUE, 0, pixels * sizeof(cl_float4), st.sum.data());
-    queue.enqueueWriteBuffer(compensation, CL_TRUE, 0, pixels * sizeof(cl_float4), st.compensation.data());
-    queue.enqueueWriteBuffer(sum_squares, CL_TRUE, 0, pixels * sizeof(cl_float4), st.sum_squares.data());
-    queue.enqueueWriteBuffer(squares_compensation, CL_TRUE, 0, pixels * sizeof(cl_float4),
-                             st.squares_compensation.data());
-    queue.enqueueWriteBuffer(samples, CL_TRUE, 0, pixels * sizeof(cl_uint), st.samples.data());
-}
+void Film::restore(const cl::CommandQueue& queue, const FilmState& st) const { write_pixels(queue, 0, width * height, st); }
 
 FilmReadout resolve(const FilmState& st) {
     const size_t pixels = size_t{st.width} * st.height;
@@ -85,25 +111,15 @@ FilmReadout resolve(const FilmState& st) {
             out.variance_of_mean.rgb[3 * p + k] = static_cast<float>(sample_variance / count);
         }
     }
-    return out;
-}
-
-FilmReadout Film::read(const cl::CommandQueue& queue) const {
-    const size_t pixels = size_t{width} * height;
-    const FilmState st = state(queue);
-    const std::vector<cl_uint>& n = st.samples;
-    FilmReadout out = resolve(st);
-    if (bounce_layers) {
-        const std::vector<cl_float4> ls = read_float4(queue, layers, pixels * bounce_layers),
-                                     lc = read_float4(queue, layer_compensation, pixels * bounce_layers);
-        for (uint32_t l = 0; l < bounce_layers; ++l) {
-            Image layer{width, height, std::vector<float>(3 * pixels, 0.0f)};
-            for (size_t p = 0; p < pixels; ++p)
-                for (int k = 0; k < 3 && n[p]; ++k)
-                    layer.rgb[3 * p + k] = static_cast<float>(
-                        (double(ls[l * pixels + p].s[k]) + double(lc[l * pixels + p].s[k])) / n[p]);
-            out.bounce_layers.push_back(std::move(layer));
-        }
+    if (st.layers.size() != pixels * st.bounce_layers) return out; // not kept
+    for (uint32_t l = 0; l < st.bounce_layers; ++l) {
+        Image layer{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
+        for (size_t p = 0; p < pixels; ++p)
+            for (int k = 0; k < 3 && n[p]; ++k)
+                layer.rgb[3 * p + k] = static_cast<float>(
+                    (double(st.layers[l * pixels + p].s[k]) + double(st.layer_compensation[l * pixels + p].s[k])) /
+                    n[p]);
+        out.bounce_layers.push_back(std::move(layer));
     }
     return out;
 }

@@ -13,12 +13,22 @@
 
 namespace wf {
 
-// The sums and counts exactly as the kernels hold them: what a render needs to
-// go on where it stopped (host/film/partial_render.h). xyz of each float4 are used.
+// The host types of the film's elements (include/wavefront/film_buffers.h).
+namespace film_element {
+using float4 = cl_float4;
+using uint32_t = cl_uint;
+} // namespace film_element
+
+// The sums and counts exactly as the kernels hold them, one vector per film
+// buffer: what a render needs to go on where it stopped
+// (host/film/partial_render.h), and the image that a render over several
+// devices gathers. xyz of each float4 are used; the layers are empty when
+// none are kept, and a partial render does not keep them.
 struct FilmState {
-    uint32_t width = 0, height = 0;
-    std::vector<cl_float4> sum, compensation, sum_squares, squares_compensation;
-    std::vector<cl_uint> samples;
+    uint32_t width = 0, height = 0, bounce_layers = 0;
+#define WF_FILM_STATE_MEMBER(type, name, extent, what) std::vector<film_element::type> name;
+    WF_FILM_BUFFERS(WF_FILM_STATE_MEMBER)
+#undef WF_FILM_STATE_MEMBER
 };
 
 struct FilmReadout {
@@ -28,7 +38,8 @@ struct FilmReadout {
     uint32_t min_samples = 0;        // the fewest samples any pixel has
 };
 
-// Mean and variance of the mean of every pixel, from its sums.
+// Mean and variance of the mean of every pixel, from its sums; the bounce
+// layers where the state holds them.
 FilmReadout resolve(const FilmState& state);
 
 class Film {
@@ -36,10 +47,18 @@ public:
     Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width, uint32_t height,
          uint32_t bounce_layers);
 
-    FilmReadout read(const cl::CommandQueue& queue) const;
+    FilmReadout read(const cl::CommandQueue& queue) const { return resolve(state(queue)); }
+    // Every buffer, the layers included.
     FilmState state(const cl::CommandQueue& queue) const;
-    // Replaces the sums and counts (the per-bounce layers are not part of a state).
+    // Replaces the sums and counts, and the layers if `state` holds them.
     void restore(const cl::CommandQueue& queue, const FilmState& state) const;
+
+    // Pixels [first, first + count) of every buffer, between the device and
+    // the same pixels of `state`, which has this film's size: the film of a
+    // unit of work (render/renderer.h). Writing leaves the layers as they
+    // are when `state` has none.
+    void read_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, FilmState& state) const;
+    void write_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, const FilmState& state) const;
 
     static size_t bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers);
     size_t bytes() const { return bytes_for(width, height, bounce_layers); }
@@ -47,7 +66,7 @@ public:
     uint32_t width, height, bounce_layers;
     // One buffer per entry of include/wavefront/film_buffers.h, by its name
     // (the layers hold one element when there are none).
-#define WF_FILM_MEMBER(type, name, what) cl::Buffer name;
+#define WF_FILM_MEMBER(type, name, extent, what) cl::Buffer name;
     WF_FILM_BUFFERS(WF_FILM_MEMBER)
 #undef WF_FILM_MEMBER
 };

@@ -28,15 +28,30 @@ double RenderStats::kernel_seconds() const {
 }
 
 double RenderStats::pool_occupancy() const {
-    double sum = 0.0;
-    size_t launches = 0;
+    double traced = 0.0, slots = 0.0;
     for (const CounterSnapshot& c : counter_reads) {
         if (c.closest_rays == 0) continue;
         // A launch that traces whole paths: its share of the pool is its samples.
-        sum += whole_path_stage() != STAGE_COUNT ? c.samples : c.closest_rays;
-        ++launches;
+        traced += whole_path_stage() != STAGE_COUNT ? c.samples : c.closest_rays;
+        slots += c.pool_size;
     }
-    return launches && pool_size ? sum / (double(launches) * pool_size) : 0.0;
+    return slots > 0.0 ? traced / slots : 0.0;
+}
+
+void RenderStats::add(const RenderStats& o, bool with_counter_reads) {
+    samples += o.samples;
+    closest_rays += o.closest_rays;
+    shadow_rays += o.shadow_rays;
+    nonfinite_samples += o.nonfinite_samples;
+    iterations += o.iterations;
+    pool_size += o.pool_size;
+    pool_bytes += o.pool_bytes;
+    for (int s = 0; s < STAGE_COUNT; ++s) {
+        stages[s].seconds += o.stages[s].seconds;
+        stages[s].launches += o.stages[s].launches;
+    }
+    for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) path_lengths[b] += o.path_lengths[b];
+    if (with_counter_reads) counter_reads.insert(counter_reads.end(), o.counter_reads.begin(), o.counter_reads.end());
 }
 
 Stage RenderStats::whole_path_stage() const {
@@ -73,6 +88,8 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
       pool_(device.context, settings.pool_size),
       film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers) {
     params_.pixel_count = camera.width * camera.height;
+    params_.first_pixel = 0;
+    params_.traced_pixels = params_.pixel_count;
     params_.pool_size = pool_.size();
     params_.max_depth = settings.max_depth;
     params_.seed = settings.seed;
@@ -117,6 +134,7 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
     std::copy_n(counters.begin(), WF_QUEUE_COUNT, snapshot.queues.begin());
     snapshot.closest_rays = counters[WF_COUNTER_CLOSEST_RAYS];
     snapshot.shadow_rays = counters[WF_COUNTER_SHADOW_RAYS];
+    snapshot.pool_size = pool_.size();
     for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
         stats_.path_lengths[b] += counters[WF_COUNTER_PATH_LENGTHS + b];
         snapshot.samples += counters[WF_COUNTER_PATH_LENGTHS + b]; // every accumulated path is in one bucket
@@ -139,16 +157,30 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
 void PathIntegrator::restore(const FilmState& film, const std::vector<uint32_t>& started) {
     film_.restore(device_.queue, film);
     pool_.restore_samples_started(device_.queue, started);
-    restored_samples_ = std::accumulate(started.begin(), started.end(), uint64_t{0});
+    samples_held_ = std::accumulate(started.begin(), started.end(), uint64_t{0});
+    samples_counted_ = stats_.samples;
+}
+
+void PathIntegrator::trace_pixels(uint32_t first, const std::vector<uint32_t>& samples) {
+    const auto count = static_cast<uint32_t>(samples.size());
+    if (count == 0 || count > pool_.size() || uint64_t{first} + count > params_.pixel_count)
+        throw std::logic_error("trace_pixels: " + std::to_string(count) + " pixels from " + std::to_string(first) +
+                               " do not fit a pool of " + std::to_string(pool_.size()));
+    params_.first_pixel = first;
+    params_.traced_pixels = count;
+    params_.pool_size = count;
+    pool_.restore_samples_started(device_.queue, samples); // one pixel a slot: its samples are the slot's
+    samples_held_ = std::accumulate(samples.begin(), samples.end(), uint64_t{0});
+    samples_counted_ = stats_.samples;
 }
 
 void PathIntegrator::run_whole_paths(Stage stage, const cl::Kernel& kernel) {
     device_.queue.enqueueFillBuffer(pool_.counters, 0u, 0, WF_COUNTER_COUNT * sizeof(cl_uint));
-    // Each launch finishes every sample it starts, so the samples done are
-    // those restored from a stopped render and those this render traced.
-    const uint64_t wanted = uint64_t{params_.pixel_count} * params_.spp;
-    while (restored_samples_ + stats_.samples < wanted && !stopping()) {
-        launch(stage, kernel, pool_.size());
+    // Each launch finishes every sample it starts, so the traced pixels hold
+    // what they held when set and what was traced since.
+    const uint64_t wanted = uint64_t{params_.traced_pixels} * params_.spp;
+    while (samples_held_ + (stats_.samples - samples_counted_) < wanted && !stopping()) {
+        launch(stage, kernel, params_.pool_size);
         const uint64_t before = stats_.samples;
         read_counters(WF_QUEUE_COUNT);
         if (stats_.samples == before)
@@ -157,7 +189,7 @@ void PathIntegrator::run_whole_paths(Stage stage, const cl::Kernel& kernel) {
 }
 
 void PathIntegrator::queue_every_slot() {
-    const uint32_t pool = pool_.size();
+    const uint32_t pool = params_.pool_size;
     std::vector<cl_uint> all_slots(pool);
     std::iota(all_slots.begin(), all_slots.end(), 0u);
     device_.queue.enqueueWriteBuffer(pool_.queues, CL_TRUE, sizeof(cl_uint) * WF_QUEUE_REGENERATE * size_t{pool},

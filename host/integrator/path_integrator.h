@@ -55,6 +55,7 @@ struct StageTime {
 struct CounterSnapshot {
     std::array<uint32_t, WF_QUEUE_COUNT> queues{};
     uint32_t closest_rays = 0, shadow_rays = 0, samples = 0;
+    uint32_t pool_size = 0; // of the pool read
 };
 
 struct RenderStats {
@@ -75,6 +76,9 @@ struct RenderStats {
     double kernel_seconds() const;
     // Mean share of the pool traced by each launch of the closest-hit work.
     double pool_occupancy() const;
+    // Adds another device's counts and kernel times (a render over several
+    // devices), and its counter reads if asked; leaves the time.
+    void add(const RenderStats& other, bool with_counter_reads);
     // The stage whose one kernel takes paths from the camera to the film (the
     // megakernel, --schedule group), or STAGE_COUNT where each stage is a kernel.
     Stage whole_path_stage() const;
@@ -116,6 +120,11 @@ public:
     // Goes on from a stopped render: its film, and the samples each slot had
     // started (which a stopped render has also finished).
     void restore(const FilmState& film, const std::vector<uint32_t>& started);
+    // From the next round on, traces pixels [first, first + samples.size()),
+    // one slot each, going on from `samples` (what the film holds of them):
+    // a unit of work of a render over several devices (render/renderer.h).
+    // The film's sums of those pixels must be current on this device.
+    void trace_pixels(uint32_t first, const std::vector<uint32_t>& samples);
 
     // Called after every read of the counters (a progress display).
     void on_progress(std::function<void(const RenderStats&)> f) { on_progress_ = std::move(f); }
@@ -149,7 +158,9 @@ protected:
     PathPool pool_;
     Film film_;
     RenderStats stats_;
-    uint64_t restored_samples_ = 0; // samples the film held before this render's first round (restore())
+    // Samples the traced pixels held when they were set (restore(),
+    // trace_pixels()), and stats_.samples then: the difference to now is traced.
+    uint64_t samples_held_ = 0, samples_counted_ = 0;
 
 private:
     std::vector<std::pair<Stage, cl::Event>> pending_; // launched since the last read

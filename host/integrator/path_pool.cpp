@@ -38,9 +38,11 @@ void PathPool::clear(const cl::CommandQueue& queue) const {
 }
 
 void PathPool::restore_samples_started(const cl::CommandQueue& queue, const std::vector<uint32_t>& started) const {
-    std::vector<cl_float4> radiance(size_);
-    for (uint32_t slot = 0; slot < size_; ++slot) std::memcpy(&radiance[slot].s[3], &started[slot], sizeof(uint32_t));
-    queue.enqueueWriteBuffer(field(PathField::radiance), CL_TRUE, 0, sizeof(cl_float4) * size_, radiance.data());
+    std::vector<cl_float4> radiance(started.size());
+    for (size_t slot = 0; slot < started.size(); ++slot)
+        std::memcpy(&radiance[slot].s[3], &started[slot], sizeof(uint32_t));
+    queue.enqueueWriteBuffer(field(PathField::radiance), CL_TRUE, 0, sizeof(cl_float4) * started.size(),
+                             radiance.data());
 }
 
 } // namespace wf

@@ -22,6 +22,7 @@ RenderParams batch_params(uint32_t count) {
     RenderParams params{};
     params.pool_size = count;
     params.pixel_count = count;
+    params.traced_pixels = count;
     return params;
 }
 

@@ -9,7 +9,7 @@ cl_uint set_stage_args(cl::Kernel& kernel, const StageArgs& a) {
 #define WF_SET_SCENE_ARG(type, name, what) kernel.setArg(index++, a.scene.name);
     WF_SCENE_BUFFERS(WF_SET_SCENE_ARG)
 #undef WF_SET_SCENE_ARG
-#define WF_SET_FILM_ARG(type, name, what) kernel.setArg(index++, a.film.name);
+#define WF_SET_FILM_ARG(type, name, extent, what) kernel.setArg(index++, a.film.name);
     WF_FILM_BUFFERS(WF_SET_FILM_ARG)
 #undef WF_SET_FILM_ARG
     return set_kernel_args(kernel, index, a.params, a.camera, a.pool.queues, a.pool.counters);

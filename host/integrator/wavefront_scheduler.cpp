@@ -73,7 +73,7 @@ void WavefrontScheduler::render_to(uint32_t spp) {
 // kernels stop at the queue's final length.
 void WavefrontScheduler::run_iterations(bool passes) {
     const cl::CommandQueue& queue = device_.queue;
-    const uint32_t pool = pool_.size();
+    const uint32_t pool = params_.pool_size;
     uint32_t extending = 0, regenerating = pool;
     for (;;) {
         const bool stop = stopping(); // read once: it may change at any time
@@ -105,7 +105,7 @@ void WavefrontScheduler::run_fullest_first() {
     constexpr int kLaterFirst[WF_QUEUE_COUNT] = {WF_QUEUE_FINISHED, WF_QUEUE_CONTINUE, WF_QUEUE_SHADOW,
                                                  WF_QUEUE_EXTEND, WF_QUEUE_REGENERATE};
     std::array<cl_uint, WF_COUNTER_COUNT> counters{};
-    counters[WF_QUEUE_REGENERATE] = pool_.size();
+    counters[WF_QUEUE_REGENERATE] = params_.pool_size;
     for (;;) {
         int fullest = kLaterFirst[0];
         if (stopping()) counters[WF_QUEUE_REGENERATE] = 0; // start nothing more

@@ -26,6 +26,13 @@ void print_report(std::ostream& out, const RenderSummary& s) {
         << (s.environment ? "an environment" : "no environment") << "\n";
     out << "features   " << s.features << "\n";
     out << "device     " << s.device << "\n";
+    for (size_t d = 0; d < s.shares.size(); ++d) {
+        const DeviceShare& share = s.shares[d];
+        out << std::setprecision(1) << "  [" << d << "]      " << share.device << ": "
+            << 100.0 * per_second(share.samples, st.samples) << "% of the samples in " << share.units
+            << " units, " << std::setprecision(2) << per_second(share.samples, share.busy_seconds) * 1e-6
+            << " M samples/s busy, " << std::setprecision(3) << share.transfer_seconds << " s moving sums\n";
+    }
     out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp";
     if (s.resumed_from_spp) out << " (resumed from " << s.resumed_from_spp << ")";
     out << " -> " << s.output << "\n";
@@ -53,10 +60,13 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << "schedule   " << integrator_name(st.integrator);
     if (megakernel) out << ": " << st.iterations << " launches";
     else out << ", " << schedule_name(st.schedule) << ": " << st.iterations << " iterations";
+    // Several devices work at once: their kernel time is set against the time each was busy.
+    double busy = s.shares.empty() ? st.seconds : 0.0;
+    for (const DeviceShare& d : s.shares) busy += d.busy_seconds;
     out << ", pool occupancy " << std::setprecision(1) << 100.0 * st.pool_occupancy() << "%; kernels "
-        << std::setprecision(3) << kernel
-        << " s, host and transfers " << st.seconds - kernel << " s (" << std::setprecision(1)
-        << 100.0 * per_second(st.seconds - kernel, st.seconds) << "%)\n";
+        << std::setprecision(3) << kernel << " s, host and transfers " << busy - kernel << " s ("
+        << std::setprecision(1) << 100.0 * per_second(busy - kernel, busy) << "%)"
+        << (s.shares.empty() ? "" : ", over every device") << "\n";
     out << "path lengths";
     for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
         if (!st.path_lengths[b]) continue;

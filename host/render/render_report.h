@@ -4,6 +4,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "integrator/path_integrator.h"
 
@@ -13,6 +14,15 @@ struct RenderTimes {
     double load = 0.0;
     double bvh_build = 0.0;
     double kernel_build = 0.0;
+};
+
+// One device's part in a render over several (render/renderer.h).
+struct DeviceShare {
+    std::string device;
+    uint64_t samples = 0;
+    uint64_t units = 0;            // runs of pixels it traced
+    double busy_seconds = 0.0;     // in its units, transfers included
+    double transfer_seconds = 0.0; // moving its units' sums to and from the host's image
 };
 
 struct RenderSummary {
@@ -38,6 +48,7 @@ struct RenderSummary {
     std::string output;
     int interrupted_by = 0; // the signal that stopped the render early, or 0
     std::string pool_note;  // why the pool is not what was asked for (or the default), when it is not
+    std::vector<DeviceShare> shares; // each device's part, when several took part
 };
 
 void print_report(std::ostream& out, const RenderSummary& s);

@@ -13,6 +13,14 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     nlohmann::json j;
     j["scene"] = s.scene;
     j["device"] = s.device;
+    nlohmann::json shares = nlohmann::json::array();
+    for (const DeviceShare& d : s.shares)
+        shares.push_back({{"device", d.device},
+                          {"samples", d.samples},
+                          {"units", d.units},
+                          {"busy_seconds", d.busy_seconds},
+                          {"transfer_seconds", d.transfer_seconds}});
+    j["device_shares"] = shares; // empty with one device
     j["features"] = s.features;
     j["triangles"] = s.triangles;
     j["width"] = s.width;

@@ -1,155 +1,152 @@
-// renderer.cpp — the order of set-up: everything that can be rejected (the
-// device's memory) is rejected before any long work starts.
+// renderer.cpp — one device renders the whole image in place; several share
+// rounds in units of work. A unit's sums are written to its device only when
+// that device's film does not hold them already, and read back after it, so
+// the host's image is always current and a device may stop at any unit.
 #include "render/renderer.h"
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
+#include <exception>
+#include <thread>
 
-#include "bvh/bvh_builder.h"
 #include "base/errors.h"
-#include "device/layout_check.h"
-#include "integrator/megakernel_scheduler.h"
-#include "integrator/path_pool.h"
-#include "device/scene_features.h"
-#include "integrator/wavefront_scheduler.h"
+#include "render/work_units.h"
 
 namespace wf {
 namespace {
 
-std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
-
-void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t pool_bytes, size_t film_bytes,
-                         size_t largest_buffer) {
-    const size_t needed = scene_bytes + pool_bytes + film_bytes;
-    if (needed > device.global_memory)
-        throw InputError("the render needs " + mib(needed) + " of device memory (scene " + mib(scene_bytes) +
-                         ", paths " + mib(pool_bytes) + ", image " + mib(film_bytes) + ") but " + device.name +
-                         " has " + mib(device.global_memory));
-    if (largest_buffer > device.max_allocation)
-        throw InputError("the render needs a " + mib(largest_buffer) + " buffer but " + device.name +
-                         " allocates at most " + mib(device.max_allocation) + " at once");
-}
-
-// The schedule asked for, or with Schedule::Auto the device's default.
-Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) {
-    return settings.schedule == Schedule::Auto ? default_schedule(device.type, settings.sort_materials)
-                                               : settings.schedule;
+double since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 } // namespace
 
-KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
-                                   std::string* features_described) {
-    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
-    if (features_described)
-        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
-    const std::optional<ProgramCache> cache =
-        settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
-    const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
-    std::string options = feature_defines(features);
-    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
-        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
-    // The scan and the group schedule size their local arrays by the launch's local size.
-    if (settings.queue_push == QueuePush::Scan ||
-        (settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group))
-        options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
-    return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
+Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
+                   const RenderSettings& settings)
+    : Renderer(std::vector<const OpenClDevice*>{&device}, scene, camera, size, settings) {}
+
+Renderer::Renderer(const std::vector<const OpenClDevice*>& devices, const Scene& scene, const SceneCamera& camera,
+                   ImageSize size, const RenderSettings& settings)
+    : pixels_(size.width * size.height), stop_(settings.stop) {
+    const SceneBuild build(scene);
+    for (const OpenClDevice* device : devices)
+        devices_.push_back(std::make_unique<DeviceRenderer>(*device, scene, build, camera, size, settings));
+    shares_.resize(devices_.size());
+    for (size_t d = 0; d < devices_.size(); ++d) shares_[d].device = devices_[d]->device().info.name;
+    by_units_ = devices_.size() > 1;
+    if (by_units_) {
+        image_ = devices_[0]->film_state(); // zeroes, as every device's film is
+        holder_.assign(pixels_, kEveryDevice);
+    }
 }
 
-Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCamera& camera, ImageSize size,
-                   const RenderSettings& requested)
-    : device_(device) {
-    RenderSettings settings = requested;
-    settings.schedule = schedule_for(device.info, settings);
-    // The one place the pool size is chosen: the request or the default,
-    // capped at the pixels, and by default at what the device holds (below).
-    settings.pool_size = choose_pool_size(requested.pool_size, default_pool_size(device.info.type, requested.integrator),
-                                          size.width * size.height, &summary_.pool_note);
+void Renderer::render_to(uint32_t spp) {
+    if (!by_units_) return devices_[0]->render_to(spp);
+    round_start_ = std::chrono::steady_clock::now();
+    in_round_ = true;
+    render_units(spp);
+    std::lock_guard<std::mutex> lock(progress_mutex_);
+    in_round_ = false;
+    seconds_ += since(round_start_);
+}
 
-    const auto start = std::chrono::steady_clock::now();
-    const Bvh bvh = build_bvh(scene.positions);
-    summary_.times.bvh_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const DeviceSceneData data = make_device_scene_data(scene, bvh);
-
-    const size_t pixels = size_t{size.width} * size.height;
-    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers);
-    if (requested.pool_size == 0) {
-        // The default pool, capped to half the memory the scene and the film
-        // leave, and to the largest buffer the device allocates: a small
-        // device renders with fewer paths in flight rather than failing.
-        const uint32_t fits = pool_that_fits(settings.pool_size, device.info.global_memory,
-                                             device.info.max_allocation, data.bytes() + film_bytes);
-        if (fits > 0 && fits < settings.pool_size) {
-            settings.pool_size = fits;
-            summary_.pool_note = "pool of " + std::to_string(fits) + " paths, what " + device.info.name +
-                                 "'s memory holds beside the scene and the image (" +
-                                 mib(device.info.global_memory) + ")";
+void Renderer::render_units(uint32_t spp) {
+    WorkUnits units(pixels_, static_cast<uint32_t>(devices_.size()));
+    std::atomic<bool> failed{false};
+    std::vector<std::exception_ptr> errors(devices_.size());
+    auto work = [&](size_t d) {
+        DeviceRenderer& device = *devices_[d];
+        try {
+            for (;;) {
+                const PixelRun run = units.next(device.stats().pool_size);
+                if (run.count == 0 || failed) return;
+                const auto start = std::chrono::steady_clock::now();
+                const bool held = std::all_of(holder_.begin() + run.first, holder_.begin() + run.first + run.count,
+                                              [&](int h) { return h == static_cast<int>(d) || h == kEveryDevice; });
+                device.render_unit(run.first, run.count, spp, image_, held);
+                std::fill_n(holder_.begin() + run.first, run.count, static_cast<int>(d));
+                std::lock_guard<std::mutex> lock(progress_mutex_);
+                shares_[d].units += 1;
+                shares_[d].busy_seconds += since(start);
+                shares_[d].transfer_seconds = device.transfer_seconds();
+                if (stop_ && stop_->load() != 0) return; // its integrator stopped too, within the unit
+            }
+        } catch (...) {
+            errors[d] = std::current_exception();
+            failed = true;
         }
+    };
+    if (devices_.size() == 1) {
+        work(0);
+    } else {
+        std::vector<std::thread> threads;
+        for (size_t d = 0; d < devices_.size(); ++d) threads.emplace_back(work, d);
+        for (std::thread& t : threads) t.join();
     }
-    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
-                        film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
-                                  pixels * sizeof(cl_float4),
-                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
-
-    check_shared_layouts(device);
-    program_ = build_render_program(device, scene, settings, &summary_.features);
-    summary_.kernels_from_cache = program_.from_cache;
-    device_scene_ = upload_scene(device.context, data);
-    const Camera device_camera = make_device_camera(camera, size);
-    if (settings.integrator == Integrator::Megakernel)
-        scheduler_ = std::make_unique<MegakernelScheduler>(device, program_.program, device_scene_, device_camera,
-                                                           settings);
-    else
-        scheduler_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_, device_camera,
-                                                          settings);
-
-    summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
-                      " compute units, " + device.info.platform + ")";
-    summary_.times.kernel_build = program_.build_seconds;
-    summary_.triangles = scene.triangle_count();
-    summary_.materials = scene.materials.size();
-    summary_.emissive_triangles = data.emissive_triangles;
-    summary_.punctual_lights = data.punctual.size();
-    summary_.environment = scene.environment != nullptr;
-    summary_.bvh_nodes = bvh.nodes.size();
-    summary_.bvh_depth = bvh.depth;
-    summary_.queue_push = settings.queue_push;
-    summary_.local_size = settings.local_size;
-    summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(Triangle);
-    summary_.width = size.width;
-    summary_.height = size.height;
-    summary_.device_bytes = device_scene_.bytes + scheduler_->stats().pool_bytes + scheduler_->film().bytes();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
 }
 
 uint32_t Renderer::resume(const FilmState& state) {
-    Film& film = scheduler_->film();
-    if (state.width != film.width || state.height != film.height)
+    const uint32_t width = devices_[0]->summary().width, height = devices_[0]->summary().height;
+    if (state.width != width || state.height != height)
         throw InputError("the partial render is " + std::to_string(state.width) + "x" + std::to_string(state.height) +
-                         ", not " + std::to_string(film.width) + "x" + std::to_string(film.height));
-    // Slot i takes its pixels i, i + pool, ... in turn, so a stopped render
-    // leaves each slot's first pixels one sample ahead of the rest, never a
-    // pixel behind one that comes after it; the count of samples it started
-    // is their sum.
-    const uint32_t pool = scheduler_->pool().size();
-    std::vector<uint32_t> started(pool, 0u);
-    for (size_t p = 0; p < state.samples.size(); ++p) {
-        const uint32_t slot = static_cast<uint32_t>(p % pool);
-        const uint32_t n = state.samples[p], first = state.samples[slot];
-        const uint32_t previous = p >= pool ? state.samples[p - pool] : n;
-        if (n > previous || n + 1 < first)
-            throw InputError("the partial render's sample counts were not left by a pool of " + std::to_string(pool) +
-                             " paths (pixel " + std::to_string(p) + ")");
-        started[slot] += n;
+                         ", not " + std::to_string(width) + "x" + std::to_string(height));
+    // One device goes on in place from counts its own pool left; any other
+    // counts, and several devices, go on by units, which take each pixel from
+    // wherever it stopped.
+    if (by_units_ || !devices_[0]->resume(state)) {
+        by_units_ = true;
+        image_ = state;
+        image_.bounce_layers = 0; // a partial render keeps none
+        holder_.assign(pixels_, kNoDevice);
     }
-    scheduler_->restore(state, started);
     return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
 }
 
+void Renderer::on_progress(std::function<void(const RenderStats&)> f) {
+    if (devices_.size() == 1) return devices_[0]->on_progress(std::move(f));
+    // Each device reports from its own thread: its counts are copied under
+    // the lock, and the sum of every device's last counts is passed on.
+    latest_.assign(devices_.size(), RenderStats{});
+    for (size_t d = 0; d < devices_.size(); ++d)
+        devices_[d]->on_progress([this, f, d](const RenderStats& s) {
+            std::lock_guard<std::mutex> lock(progress_mutex_);
+            latest_[d] = RenderStats{};
+            latest_[d].add(s, false);
+            RenderStats total;
+            for (const RenderStats& part : latest_) total.add(part, false);
+            total.seconds = seconds_ + (in_round_ ? since(round_start_) : 0.0);
+            f(total);
+        });
+}
+
+FilmReadout Renderer::read() const { return by_units_ ? resolve(image_) : devices_[0]->read(); }
+
+FilmState Renderer::film_state() const { return by_units_ ? image_ : devices_[0]->film_state(); }
+
+RenderStats Renderer::stats() const {
+    if (!by_units_) return devices_[0]->stats();
+    RenderStats total = devices_[0]->stats();
+    for (size_t d = 1; d < devices_.size(); ++d) total.add(devices_[d]->stats(), true);
+    std::lock_guard<std::mutex> lock(progress_mutex_);
+    total.seconds = seconds_;
+    return total;
+}
+
 RenderSummary Renderer::summary() const {
-    RenderSummary s = summary_;
+    RenderSummary s = devices_[0]->summary();
+    if (devices_.size() == 1) return s;
     s.stats = stats();
-    s.spp = static_cast<uint32_t>(s.stats.samples / (size_t{s.width} * s.height));
+    s.spp = static_cast<uint32_t>(s.stats.samples / pixels_);
+    s.device = std::to_string(devices_.size()) + " devices";
+    s.shares = shares_;
+    for (size_t d = 0; d < devices_.size(); ++d) {
+        const RenderSummary part = devices_[d]->summary();
+        if (d > 0) s.device_bytes += part.device_bytes, s.times.kernel_build += part.times.kernel_build;
+        s.kernels_from_cache = s.kernels_from_cache && part.kernels_from_cache;
+        s.shares[d].samples = part.stats.samples;
+    }
     return s;
 }
 

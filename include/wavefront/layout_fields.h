@@ -26,7 +26,8 @@
     X(LightEntry, kind)                                                                           \
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \
     X(Camera, width) X(Camera, forward) X(Camera, height)                                         \
-    X(RenderParams, pixel_count) X(RenderParams, pool_size) X(RenderParams, spp)                  \
+    X(RenderParams, pixel_count) X(RenderParams, first_pixel) X(RenderParams, traced_pixels)     \
+    X(RenderParams, pool_size) X(RenderParams, spp)                                              \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
     X(RenderParams, sampler) X(RenderParams, bounce_layers) X(RenderParams, environment_light)     \

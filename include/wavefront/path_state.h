@@ -15,8 +15,10 @@
 
 /* Constants of one render, passed by value to every stage kernel. */
 typedef struct RenderParams {
-    uint32_t pixel_count;
-    uint32_t pool_size;      /* path slots; slot i owns pixels i, i + pool, ... */
+    uint32_t pixel_count;    /* of the image */
+    uint32_t first_pixel;    /* the pool traces pixels [first_pixel, first_pixel + traced_pixels): */
+    uint32_t traced_pixels;  /* the whole image, or one device's unit of work (host/render/) */
+    uint32_t pool_size;      /* path slots; slot i owns pixels first + i, first + i + pool, ... */
     uint32_t spp;            /* samples per pixel to reach in the current round */
     uint32_t max_depth;      /* bounces; WF_UNLIMITED_DEPTH = ended by roulette alone */
     uint32_t seed;
@@ -28,7 +30,7 @@ typedef struct RenderParams {
     uint32_t bounce_layers;  /* film layers by bounce count (0: none), the last one open-ended */
     uint32_t environment_light; /* its entry in the light table; WF_NO_LIGHT without one */
     float scene_diameter;    /* of the scene's bounds: a shadow ray toward infinity stops past them */
-    uint32_t pad[3];
+    uint32_t pad[1];
     Environment environment; /* valid when environment_light != WF_NO_LIGHT */
 } RenderParams;
 

@@ -91,9 +91,10 @@ std::string read_file(const std::string& path) {
     return s.str();
 }
 
-ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir) {
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env) {
     const std::string out = scratch_dir + "/stdout.txt", err = scratch_dir + "/stderr.txt";
-    const std::string command = std::string("'") + WF_BINARY + "' " + args + " > '" + out + "' 2> '" + err + "'";
+    const std::string command = (env.empty() ? "" : "env " + env + " ") + "'" + WF_BINARY + "' " + args + " > '" +
+                                out + "' 2> '" + err + "'";
     const int status = std::system(command.c_str());
     return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
 }

@@ -64,8 +64,9 @@ struct ProcessResult {
 };
 
 // Runs the `wavefront` executable with `args` (shell words), as a user would,
-// capturing its output in files under `scratch_dir`.
-ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir);
+// capturing its output in files under `scratch_dir`; `env` (NAME=value words)
+// is added to its environment.
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env = "");
 
 // The same, with stdout and stderr both on one pseudo-terminal, as a user at a
 // terminal sees them: `out` holds what the terminal received, `err` is empty.

@@ -1,0 +1,171 @@
+// device_renderer.cpp — the order of set-up: everything that can be rejected
+// (the device's memory) is rejected before any long work starts.
+#include "render/device_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "base/errors.h"
+#include "device/layout_check.h"
+#include "integrator/megakernel_scheduler.h"
+#include "integrator/path_pool.h"
+#include "device/scene_features.h"
+#include "integrator/wavefront_scheduler.h"
+
+namespace wf {
+namespace {
+
+std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
+
+void check_device_memory(const DeviceInfo& device, size_t scene_bytes, size_t pool_bytes, size_t film_bytes,
+                         size_t largest_buffer) {
+    const size_t needed = scene_bytes + pool_bytes + film_bytes;
+    if (needed > device.global_memory)
+        throw InputError("the render needs " + mib(needed) + " of device memory (scene " + mib(scene_bytes) +
+                         ", paths " + mib(pool_bytes) + ", image " + mib(film_bytes) + ") but " + device.name +
+                         " has " + mib(device.global_memory));
+    if (largest_buffer > device.max_allocation)
+        throw InputError("the render needs a " + mib(largest_buffer) + " buffer but " + device.name +
+                         " allocates at most " + mib(device.max_allocation) + " at once");
+}
+
+// The schedule asked for, or with Schedule::Auto the device's default.
+Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) {
+    return settings.schedule == Schedule::Auto ? default_schedule(device.type, settings.sort_materials)
+                                               : settings.schedule;
+}
+
+} // namespace
+
+KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
+                                   std::string* features_described) {
+    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    if (features_described)
+        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
+    const std::optional<ProgramCache> cache =
+        settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
+    const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
+    std::string options = feature_defines(features);
+    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
+        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
+    // The scan and the group schedule size their local arrays by the launch's local size.
+    if (settings.queue_push == QueuePush::Scan ||
+        (settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group))
+        options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
+}
+
+SceneBuild::SceneBuild(const Scene& scene) {
+    const auto start = std::chrono::steady_clock::now();
+    bvh = build_bvh(scene.positions);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    data = make_device_scene_data(scene, bvh);
+}
+
+DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, const SceneBuild& build,
+                               const SceneCamera& camera, ImageSize size, const RenderSettings& requested)
+    : device_(device) {
+    RenderSettings settings = requested;
+    settings.schedule = schedule_for(device.info, settings);
+    // The one place the pool size is chosen: the request or the default,
+    // capped at the pixels, and by default at what the device holds (below).
+    settings.pool_size = choose_pool_size(requested.pool_size, default_pool_size(device.info.type, requested.integrator),
+                                          size.width * size.height, &summary_.pool_note);
+    const DeviceSceneData& data = build.data;
+    const Bvh& bvh = build.bvh;
+    summary_.times.bvh_build = build.seconds;
+
+    const size_t pixels = size_t{size.width} * size.height;
+    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers);
+    if (requested.pool_size == 0) {
+        // The default pool, capped to half the memory the scene and the film
+        // leave, and to the largest buffer the device allocates: a small
+        // device renders with fewer paths in flight rather than failing.
+        const uint32_t fits = pool_that_fits(settings.pool_size, device.info.global_memory,
+                                             device.info.max_allocation, data.bytes() + film_bytes);
+        if (fits > 0 && fits < settings.pool_size) {
+            settings.pool_size = fits;
+            summary_.pool_note = "pool of " + std::to_string(fits) + " paths, what " + device.info.name +
+                                 "'s memory holds beside the scene and the image (" +
+                                 mib(device.info.global_memory) + ")";
+        }
+    }
+    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
+                        film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
+                                  pixels * sizeof(cl_float4),
+                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
+
+    check_shared_layouts(device);
+    program_ = build_render_program(device, scene, settings, &summary_.features);
+    summary_.kernels_from_cache = program_.from_cache;
+    device_scene_ = upload_scene(device.context, data);
+    const Camera device_camera = make_device_camera(camera, size);
+    if (settings.integrator == Integrator::Megakernel)
+        integrator_ = std::make_unique<MegakernelScheduler>(device, program_.program, device_scene_, device_camera,
+                                                            settings);
+    else
+        integrator_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_, device_camera,
+                                                           settings);
+
+    summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
+                      " compute units, " + device.info.platform + ")";
+    summary_.times.kernel_build = program_.build_seconds;
+    summary_.triangles = scene.triangle_count();
+    summary_.materials = scene.materials.size();
+    summary_.emissive_triangles = data.emissive_triangles;
+    summary_.punctual_lights = data.punctual.size();
+    summary_.environment = scene.environment != nullptr;
+    summary_.bvh_nodes = bvh.nodes.size();
+    summary_.bvh_depth = bvh.depth;
+    summary_.queue_push = settings.queue_push;
+    summary_.local_size = settings.local_size;
+    summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(Triangle);
+    summary_.width = size.width;
+    summary_.height = size.height;
+    summary_.device_bytes = device_scene_.bytes + integrator_->stats().pool_bytes + integrator_->film().bytes();
+}
+
+bool DeviceRenderer::resume(const FilmState& state) {
+    // Slot i takes its pixels i, i + pool, ... in turn, so a render this pool
+    // stopped leaves each slot's first pixels one sample ahead of the rest,
+    // never a pixel behind one that comes after it; the count of samples it
+    // started is their sum.
+    const uint32_t pool = integrator_->pool().size();
+    std::vector<uint32_t> started(pool, 0u);
+    for (size_t p = 0; p < state.samples.size(); ++p) {
+        const uint32_t slot = static_cast<uint32_t>(p % pool);
+        const uint32_t n = state.samples[p], first = state.samples[slot];
+        const uint32_t previous = p >= pool ? state.samples[p - pool] : n;
+        if (n > previous || n + 1 < first) return false;
+        started[slot] += n;
+    }
+    integrator_->restore(state, started);
+    return true;
+}
+
+void DeviceRenderer::render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) {
+    const Film& film = integrator_->film();
+    auto start = std::chrono::steady_clock::now();
+    auto timed = [&] {
+        const auto now = std::chrono::steady_clock::now();
+        transfer_seconds_ += std::chrono::duration<double>(now - start).count();
+    };
+    if (!held) film.write_pixels(device_.queue, first, count, image);
+    integrator_->trace_pixels(first, std::vector<uint32_t>(image.samples.begin() + first,
+                                                           image.samples.begin() + first + count));
+    timed();
+    integrator_->render_to(spp);
+    start = std::chrono::steady_clock::now();
+    film.read_pixels(device_.queue, first, count, image);
+    timed();
+}
+
+RenderSummary DeviceRenderer::summary() const {
+    RenderSummary s = summary_;
+    s.stats = stats();
+    s.spp = static_cast<uint32_t>(s.stats.samples / (size_t{s.width} * s.height));
+    return s;
+}
+
+} // namespace wf

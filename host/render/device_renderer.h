@@ -1,0 +1,74 @@
+// device_renderer.h — a scene made ready on one device: uploaded, the memory
+// it needs checked against the device, the kernels built and the integrator
+// (wavefront or megakernel) set up. A Renderer (renderer.h) drives one per
+// device: over the whole image when it has one device, or unit by unit, each a
+// run of pixels, when it has several.
+#pragma once
+
+#include <memory>
+
+#include "bvh/bvh_builder.h"
+#include "device/device_scene.h"
+#include "device/kernel_program.h"
+#include "device/opencl_device.h"
+#include "film/film.h"
+#include "integrator/path_integrator.h"
+#include "render/render_report.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace wf {
+
+// The stage kernels for `scene`: compiled for its features unless
+// settings.specialize is off, through the program cache in settings.cache_dir
+// if one is set. `features_described`, if given, receives what was compiled in.
+KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
+                                   std::string* features_described = nullptr);
+
+// What is built once on the host for every device: the BVH and the buffers' contents.
+struct SceneBuild {
+    SceneBuild(const Scene& scene);
+    Bvh bvh;
+    DeviceSceneData data;
+    double seconds = 0.0; // building the BVH
+};
+
+class DeviceRenderer {
+public:
+    // Throws InputError when the render cannot fit the device, before allocating.
+    DeviceRenderer(const OpenClDevice& device, const Scene& scene, const SceneBuild& build, const SceneCamera& camera,
+                   ImageSize size, const RenderSettings& settings);
+
+    // Continues every pixel it traces up to `spp` samples, unless settings.stop ends the round early.
+    void render_to(uint32_t spp) { integrator_->render_to(spp); }
+    // Goes on from a stopped render's film (host/film/partial_render.h) over
+    // the whole image, when its sample counts are those this pool leaves;
+    // false, and nothing changed, when they are not.
+    bool resume(const FilmState& state);
+    // A unit of work: pixels [first, first + count) of `image` taken to `spp`
+    // samples, one path slot each (count is at most the pool). Their sums are
+    // written to the device first unless `held` (its film has them already),
+    // and read back into `image` after.
+    void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held);
+
+    void on_progress(std::function<void(const RenderStats&)> f) { integrator_->on_progress(std::move(f)); }
+    FilmReadout read() const { return integrator_->film().read(device_.queue); }
+    FilmState film_state() const { return integrator_->film().state(device_.queue); }
+    const RenderStats& stats() const { return integrator_->stats(); }
+    const OpenClDevice& device() const { return device_; }
+    // Spent moving units' sums between the host and this device.
+    double transfer_seconds() const { return transfer_seconds_; }
+
+    // What the closing report says of this device's render so far.
+    RenderSummary summary() const;
+
+private:
+    const OpenClDevice& device_;
+    RenderSummary summary_;
+    DeviceScene device_scene_;
+    KernelProgram program_;
+    std::unique_ptr<PathIntegrator> integrator_;
+    double transfer_seconds_ = 0.0;
+};
+
+} // namespace wf
