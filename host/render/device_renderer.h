@@ -14,6 +14,7 @@
 #include "film/film.h"
 #include "integrator/path_integrator.h"
 #include "render/render_report.h"
+#include "render/unit_worker.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -33,7 +34,7 @@ struct SceneBuild {
     double seconds = 0.0; // building the BVH
 };
 
-class DeviceRenderer {
+class DeviceRenderer : public UnitWorker {
 public:
     // Throws InputError when the render cannot fit the device, before allocating.
     DeviceRenderer(const OpenClDevice& device, const Scene& scene, const SceneBuild& build, const SceneCamera& camera,
@@ -45,19 +46,18 @@ public:
     // the whole image, when its sample counts are those this pool leaves;
     // false, and nothing changed, when they are not.
     bool resume(const FilmState& state);
-    // A unit of work: pixels [first, first + count) of `image` taken to `spp`
-    // samples, one path slot each (count is at most the pool). Their sums are
-    // written to the device first unless `held` (its film has them already),
-    // and read back into `image` after.
-    void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held);
+    // A unit of work (unit_worker.h), one path slot a pixel.
+    void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) override;
+    std::string name() const override { return device_.info.name; }
+    uint32_t most_pixels() const override { return stats().pool_size; }
+    RenderStats counts() const override;
+    double transfer_seconds() const override { return transfer_seconds_; }
 
     void on_progress(std::function<void(const RenderStats&)> f) { integrator_->on_progress(std::move(f)); }
     FilmReadout read() const { return integrator_->film().read(device_.queue); }
     FilmState film_state() const { return integrator_->film().state(device_.queue); }
     const RenderStats& stats() const { return integrator_->stats(); }
     const OpenClDevice& device() const { return device_; }
-    // Spent moving units' sums between the host and this device.
-    double transfer_seconds() const { return transfer_seconds_; }
 
     // What the closing report says of this device's render so far.
     RenderSummary summary() const;

@@ -1,11 +1,10 @@
-// renderer.cpp — one device renders the whole image in place; several share
-// rounds in units of work. A unit's sums are written to its device only when
-// that device's film does not hold them already, and read back after it, so
-// the host's image is always current and a device may stop at any unit.
+// renderer.cpp — one device renders the whole image in place; several
+// workers share rounds in units of work. A unit's sums go to its worker only
+// when the worker's film does not hold them already, and come back after it,
+// so the host's image is always current and a worker may stop at any unit.
 #include "render/renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <exception>
 #include <thread>
 
@@ -31,12 +30,21 @@ Renderer::Renderer(const std::vector<const OpenClDevice*>& devices, const Scene&
     const SceneBuild build(scene);
     for (const OpenClDevice* device : devices)
         devices_.push_back(std::make_unique<DeviceRenderer>(*device, scene, build, camera, size, settings));
-    shares_.resize(devices_.size());
-    for (size_t d = 0; d < devices_.size(); ++d) shares_[d].device = devices_[d]->device().info.name;
-    by_units_ = devices_.size() > 1;
-    if (by_units_) {
-        image_ = devices_[0]->film_state(); // zeroes, as every device's film is
-        holder_.assign(pixels_, kEveryDevice);
+    add_workers({});
+}
+
+void Renderer::add_workers(std::vector<std::unique_ptr<UnitWorker>> workers) {
+    for (auto& w : workers) remote_.push_back(std::move(w));
+    workers_.clear();
+    for (auto& d : devices_) workers_.push_back(d.get());
+    for (auto& r : remote_) workers_.push_back(r.get());
+    shares_.assign(workers_.size(), DeviceShare{});
+    for (size_t w = 0; w < workers_.size(); ++w) shares_[w].device = workers_[w]->name();
+    latest_.assign(workers_.size(), RenderStats{});
+    if (workers_.size() > 1 && !by_units_) {
+        by_units_ = true;
+        image_ = devices_[0]->film_state(); // zeroes, as every worker's film is
+        holder_.assign(pixels_, kEveryWorker);
     }
 }
 
@@ -51,36 +59,39 @@ void Renderer::render_to(uint32_t spp) {
 }
 
 void Renderer::render_units(uint32_t spp) {
-    WorkUnits units(pixels_, static_cast<uint32_t>(devices_.size()));
+    WorkUnits units(pixels_, static_cast<uint32_t>(workers_.size()));
     std::atomic<bool> failed{false};
-    std::vector<std::exception_ptr> errors(devices_.size());
-    auto work = [&](size_t d) {
-        DeviceRenderer& device = *devices_[d];
+    std::vector<std::exception_ptr> errors(workers_.size());
+    auto work = [&](size_t w) {
+        UnitWorker& worker = *workers_[w];
+        const bool local = w < devices_.size(); // a local device reports its own progress
         try {
             for (;;) {
-                const PixelRun run = units.next(device.stats().pool_size);
+                const PixelRun run = units.next(worker.most_pixels());
                 if (run.count == 0 || failed) return;
                 const auto start = std::chrono::steady_clock::now();
                 const bool held = std::all_of(holder_.begin() + run.first, holder_.begin() + run.first + run.count,
-                                              [&](int h) { return h == static_cast<int>(d) || h == kEveryDevice; });
-                device.render_unit(run.first, run.count, spp, image_, held);
-                std::fill_n(holder_.begin() + run.first, run.count, static_cast<int>(d));
+                                              [&](int h) { return h == static_cast<int>(w) || h == kEveryWorker; });
+                worker.render_unit(run.first, run.count, spp, image_, held);
+                std::fill_n(holder_.begin() + run.first, run.count, static_cast<int>(w));
+                const RenderStats counts = local ? RenderStats{} : worker.counts();
                 std::lock_guard<std::mutex> lock(progress_mutex_);
-                shares_[d].units += 1;
-                shares_[d].busy_seconds += since(start);
-                shares_[d].transfer_seconds = device.transfer_seconds();
+                shares_[w].units += 1;
+                shares_[w].busy_seconds += since(start);
+                shares_[w].transfer_seconds = worker.transfer_seconds();
+                if (!local) report_progress(w, counts);
                 if (stop_ && stop_->load() != 0) return; // its integrator stopped too, within the unit
             }
         } catch (...) {
-            errors[d] = std::current_exception();
+            errors[w] = std::current_exception();
             failed = true;
         }
     };
-    if (devices_.size() == 1) {
+    if (workers_.size() == 1) {
         work(0);
     } else {
         std::vector<std::thread> threads;
-        for (size_t d = 0; d < devices_.size(); ++d) threads.emplace_back(work, d);
+        for (size_t w = 0; w < workers_.size(); ++w) threads.emplace_back(work, w);
         for (std::thread& t : threads) t.join();
     }
     for (const std::exception_ptr& e : errors)
@@ -93,31 +104,36 @@ uint32_t Renderer::resume(const FilmState& state) {
         throw InputError("the partial render is " + std::to_string(state.width) + "x" + std::to_string(state.height) +
                          ", not " + std::to_string(width) + "x" + std::to_string(height));
     // One device goes on in place from counts its own pool left; any other
-    // counts, and several devices, go on by units, which take each pixel from
+    // counts, and several workers, go on by units, which take each pixel from
     // wherever it stopped.
     if (by_units_ || !devices_[0]->resume(state)) {
         by_units_ = true;
         image_ = state;
         image_.bounce_layers = 0; // a partial render keeps none
-        holder_.assign(pixels_, kNoDevice);
+        holder_.assign(pixels_, kNoWorker);
     }
     return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
 }
 
+void Renderer::report_progress(size_t w, const RenderStats& counts) {
+    latest_[w] = counts;
+    if (!progress_) return;
+    RenderStats total;
+    for (const RenderStats& part : latest_) total.add(part, false);
+    total.seconds = seconds_ + (in_round_ ? since(round_start_) : 0.0);
+    progress_(total);
+}
+
 void Renderer::on_progress(std::function<void(const RenderStats&)> f) {
-    if (devices_.size() == 1) return devices_[0]->on_progress(std::move(f));
-    // Each device reports from its own thread: its counts are copied under
-    // the lock, and the sum of every device's last counts is passed on.
-    latest_.assign(devices_.size(), RenderStats{});
+    if (workers_.size() == 1) return devices_[0]->on_progress(std::move(f));
+    progress_ = std::move(f);
+    // Each local device reports from its own thread, with its own counts.
     for (size_t d = 0; d < devices_.size(); ++d)
-        devices_[d]->on_progress([this, f, d](const RenderStats& s) {
+        devices_[d]->on_progress([this, d](const RenderStats& s) {
+            RenderStats counts;
+            counts.add(s, false);
             std::lock_guard<std::mutex> lock(progress_mutex_);
-            latest_[d] = RenderStats{};
-            latest_[d].add(s, false);
-            RenderStats total;
-            for (const RenderStats& part : latest_) total.add(part, false);
-            total.seconds = seconds_ + (in_round_ ? since(round_start_) : 0.0);
-            f(total);
+            report_progress(d, counts);
         });
 }
 
@@ -129,6 +145,7 @@ RenderStats Renderer::stats() const {
     if (!by_units_) return devices_[0]->stats();
     RenderStats total = devices_[0]->stats();
     for (size_t d = 1; d < devices_.size(); ++d) total.add(devices_[d]->stats(), true);
+    for (const auto& r : remote_) total.add(r->counts(), false);
     std::lock_guard<std::mutex> lock(progress_mutex_);
     total.seconds = seconds_;
     return total;
@@ -136,17 +153,18 @@ RenderStats Renderer::stats() const {
 
 RenderSummary Renderer::summary() const {
     RenderSummary s = devices_[0]->summary();
-    if (devices_.size() == 1) return s;
+    if (workers_.size() == 1) return s;
     s.stats = stats();
     s.spp = static_cast<uint32_t>(s.stats.samples / pixels_);
-    s.device = std::to_string(devices_.size()) + " devices";
+    s.device = std::to_string(workers_.size()) + " devices";
     s.shares = shares_;
-    for (size_t d = 0; d < devices_.size(); ++d) {
+    for (size_t d = 1; d < devices_.size(); ++d) {
         const RenderSummary part = devices_[d]->summary();
-        if (d > 0) s.device_bytes += part.device_bytes, s.times.kernel_build += part.times.kernel_build;
+        s.device_bytes += part.device_bytes;
+        s.times.kernel_build += part.times.kernel_build;
         s.kernels_from_cache = s.kernels_from_cache && part.kernels_from_cache;
-        s.shares[d].samples = part.stats.samples;
     }
+    for (size_t w = 0; w < workers_.size(); ++w) s.shares[w].samples = workers_[w]->counts().samples;
     return s;
 }
 

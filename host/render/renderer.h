@@ -3,7 +3,8 @@
 // (device_renderer.h). With several, each device runs in a host thread of its
 // own and pulls units of work (work_units.h): runs of pixels whose sums travel
 // through the image the host keeps, so that each pixel is traced by one device
-// at a time, in its sample order. The command line and the tests both go
+// at a time, in its sample order. Devices of other MPI ranks join as workers
+// like any other (host/cluster/). The command line and the tests both go
 // through it; progressive_render.h calls it round by round.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "render/device_renderer.h"
+#include "render/unit_worker.h"
 
 namespace wf {
 
@@ -25,39 +27,49 @@ public:
     Renderer(const std::vector<const OpenClDevice*>& devices, const Scene& scene, const SceneCamera& camera,
              ImageSize size, const RenderSettings& settings);
 
+    // Workers beyond this process's devices (another rank's), before resume()
+    // and the first round: from then on every round goes by units.
+    void add_workers(std::vector<std::unique_ptr<UnitWorker>> workers);
+
     // Continues every pixel up to `spp` samples, unless settings.stop ends the round early.
     void render_to(uint32_t spp);
     // Goes on from a stopped render's film (host/film/partial_render.h), which
     // must have this image's size; returns the fewest samples a pixel has.
     // Throws InputError otherwise.
     uint32_t resume(const FilmState& state);
-    // Called after every read of a device's counters, with what every device has done.
+    // Called as work is done: after every read of a device's counters, and
+    // after each unit of another rank's; with what every worker has done.
     void on_progress(std::function<void(const RenderStats&)> f);
     FilmReadout read() const;
     FilmState film_state() const;
-    // Every device's statistics together; the time is the render's wall time.
+    // Every worker's statistics together; the time is the render's wall time.
     RenderStats stats() const;
 
     // What the closing report says of this render so far.
     RenderSummary summary() const;
 
 private:
-    // Units of work over the devices, each in a thread of its own when there are several.
+    // Units of work over the workers, each in a thread of its own when there are several.
     void render_units(uint32_t spp);
+    // Under progress_mutex_: worker w's counts as they now are, passed on summed.
+    void report_progress(size_t w, const RenderStats& counts);
 
-    std::vector<std::unique_ptr<DeviceRenderer>> devices_;
+    std::vector<std::unique_ptr<DeviceRenderer>> devices_; // this process's
+    std::vector<std::unique_ptr<UnitWorker>> remote_;      // other ranks' devices
+    std::vector<UnitWorker*> workers_;                     // devices_, then remote_
     uint32_t pixels_ = 0;
-    // By units of work: the image as the devices last left it, and per pixel
-    // the device whose film holds the same sums (kEveryDevice, kNoDevice).
+    // By units of work: the image as the workers last left it, and per pixel
+    // the worker whose film holds the same sums (kEveryWorker, kNoWorker).
     bool by_units_ = false;
     FilmState image_;
     std::vector<int> holder_;
-    static constexpr int kEveryDevice = -1, kNoDevice = -2;
+    static constexpr int kEveryWorker = -1, kNoWorker = -2;
     const std::atomic<int>* stop_;
-    // Guarded by progress_mutex_ while the devices' threads run:
+    // Guarded by progress_mutex_ while the workers' threads run:
     mutable std::mutex progress_mutex_;
-    std::vector<DeviceShare> shares_; // units and times; the samples from each device's stats
-    std::vector<RenderStats> latest_; // each device's counts at its last progress report
+    std::function<void(const RenderStats&)> progress_;
+    std::vector<DeviceShare> shares_; // units and times; the samples from each worker's counts
+    std::vector<RenderStats> latest_; // each worker's counts at its last progress report
     double seconds_ = 0.0;            // wall time in render_to() while rendering by units
     bool in_round_ = false;
     std::chrono::steady_clock::time_point round_start_;
