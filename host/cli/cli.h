@@ -33,6 +33,7 @@ struct RenderOptions {
     double checkpoint_every = 0.0; // seconds between partial renders written to OUT.partial.exr; 0: none
     std::string resume;            // a partial render to go on from
     bool quiet = false;            // errors only: no progress line, table, report, warning or note
+    int ranks = 1;                 // MPI ranks sharing the render: set by cluster_render.cpp, not a flag
 };
 
 // `wavefront cache warm|clear`.

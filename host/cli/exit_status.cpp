@@ -9,25 +9,26 @@
 
 namespace wf {
 
-int report_exception() {
+Failure describe_exception() {
     try {
         throw;
     } catch (const InputError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 2;
+        return {2, e.what()};
     } catch (const DeviceError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+        return {1, e.what()};
     } catch (const cl::Error& e) {
-        std::cerr << "error: OpenCL call " << e.what() << " failed with code " << e.err() << "\n";
-        return 1;
+        return {1, std::string("OpenCL call ") + e.what() + " failed with code " + std::to_string(e.err())};
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+        return {1, e.what()};
     } catch (...) {
-        std::cerr << "error: an unknown failure\n";
-        return 1;
+        return {1, "an unknown failure"};
     }
+}
+
+int report_exception() {
+    const Failure failure = describe_exception();
+    std::cerr << "error: " << failure.message << "\n";
+    return failure.exit_code;
 }
 
 } // namespace wf

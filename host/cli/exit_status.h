@@ -3,7 +3,18 @@
 // (DeviceError, a failed OpenCL call, anything else), with one line on stderr.
 #pragma once
 
+#include <string>
+
 namespace wf {
+
+struct Failure {
+    int exit_code = 1;
+    std::string message; // one line, without "error: "
+};
+
+// Call from within a catch (...) block: the exception in flight as an exit
+// code and a message.
+Failure describe_exception();
 
 // Call from within a catch (...) block: prints the exception in flight as
 // "error: ..." and returns the exit code for it.

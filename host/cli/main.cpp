@@ -5,7 +5,9 @@
 // Every failure is one line on stderr that names the thing at fault.
 #include <iostream>
 
+#include "base/errors.h"
 #include "cli/cli.h"
+#include "cluster/cluster_render.h"
 #include "cli/exit_status.h"
 #include "cli/render_command.h"
 #include "cli/version_text.h"
@@ -33,12 +35,24 @@ int main(int argc, const char** argv) {
             // --quiet: errors only, which reach stderr as exceptions, below.
             std::ostream quiet(nullptr);
             std::ostream& out = cl.render.quiet ? quiet : std::cout;
-            const wf::RenderSummary summary = wf::run_render(cl.render, out, cl.render.quiet ? quiet : std::cerr);
+            std::ostream& log = cl.render.quiet ? quiet : std::cerr;
+            if (wf::ranks_launched() > 1) {
+#ifdef WF_HAVE_MPI
+                return wf::render_on_ranks(cl.render, out, log);
+#else
+                throw wf::DeviceError("started by mpirun as " + std::to_string(wf::ranks_launched()) +
+                                      " ranks, but built without MPI: install libopenmpi-dev "
+                                      "(scripts/setup.sh does) and build again");
+#endif
+            }
+            const wf::RenderSummary summary = wf::run_render(cl.render, out, log);
             wf::print_report(out, summary);
             return summary.interrupted_by ? 128 + summary.interrupted_by : 0; // as a shell reports a signal
         }
         }
     } catch (...) {
+        // Under mpirun every rank meets the same bad flag or file: rank 0 says so once.
+        if (wf::rank_launched() != 0) return wf::describe_exception().exit_code;
         return wf::report_exception();
     }
     return 1;

@@ -139,9 +139,7 @@ std::string cache_directory(const std::string& requested) {
     return fallback ? fallback->string() : std::string();
 }
 
-RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log) {
-    const auto start = std::chrono::steady_clock::now();
-    check_outputs(options);
+Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
     Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
     if (!options.environment.empty()) {
         auto map = std::make_shared<EnvironmentMap>(
@@ -152,6 +150,21 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.environment_uniform > 0.0f)
         scene.environment = std::make_shared<EnvironmentMap>(constant_environment(options.environment_uniform));
     light_unlit_scene(scene);
+    return scene;
+}
+
+RenderSettings device_settings(const RenderOptions& options) {
+    RenderSettings settings = options.settings;
+    settings.cache_dir = cache_directory(options.cache_dir);
+    settings.stop = &install_interrupt_handlers();
+    return settings;
+}
+
+RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log,
+                         const std::function<void(Renderer&, ImageSize)>& add_workers) {
+    const auto start = std::chrono::steady_clock::now();
+    check_outputs(options);
+    Scene scene = load_render_scene(options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
@@ -184,9 +197,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const std::vector<OpenClDevice> devices = open_devices(options.device);
     std::vector<const OpenClDevice*> chosen;
     for (const OpenClDevice& d : devices) chosen.push_back(&d);
-    RenderSettings settings = options.settings;
-    settings.cache_dir = cache_directory(options.cache_dir);
-    settings.stop = &install_interrupt_handlers();
+    const RenderSettings settings = device_settings(options);
     // Compiling takes seconds on a cold cache: say so on a terminal, then erase the line.
     const bool terminal = ::isatty(STDERR_FILENO);
     if (terminal && !options.quiet)
@@ -194,6 +205,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     Renderer renderer(chosen, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
+    if (add_workers) add_workers(renderer, size);
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;
@@ -234,6 +246,10 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     progress_line.clear();
 
     RenderSummary summary = renderer.summary();
+    summary.ranks = options.ranks;
+    if (options.ranks > 1) // the other ranks' devices are named by their rank already
+        for (DeviceShare& share : summary.shares)
+            if (share.device.rfind("rank ", 0) != 0) share.device = "rank 0: " + share.device;
     summary.interrupted_by = interrupt_signal();
     summary.spp = film.min_samples;
     summary.resumed_from_spp = progress.start_spp;

@@ -4,6 +4,7 @@
 #include "film/film.h"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 // Planes of one element per pixel in a buffer of each extent (film_buffers.h).
@@ -34,7 +35,49 @@ void write_planes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_
     }
 }
 
+template <typename T>
+void pack_planes(const std::vector<T>& from, size_t pixels, uint32_t planes, uint32_t first, uint32_t count,
+                 std::vector<unsigned char>& out) {
+    if (from.size() != pixels * planes) return; // layers a state does not keep
+    for (size_t plane = 0; plane < planes; ++plane) {
+        const auto* begin = reinterpret_cast<const unsigned char*>(from.data() + plane * pixels + first);
+        out.insert(out.end(), begin, begin + count * sizeof(T));
+    }
+}
+
+template <typename T>
+size_t unpack_planes(const unsigned char* bytes, size_t size, size_t pixels, uint32_t planes, uint32_t first,
+                     uint32_t count, std::vector<T>& into) {
+    if (into.size() != pixels * planes) return 0;
+    const size_t plane_bytes = count * sizeof(T);
+    if (size < planes * plane_bytes) throw std::runtime_error("a unit's sums arrived short");
+    for (size_t plane = 0; plane < planes; ++plane)
+        std::memcpy(into.data() + plane * pixels + first, bytes + plane * plane_bytes, plane_bytes);
+    return planes * plane_bytes;
+}
+
 } // namespace
+
+std::vector<unsigned char> pack_pixels(const FilmState& st, uint32_t first, uint32_t count) {
+    const size_t pixels = size_t{st.width} * st.height;
+    std::vector<unsigned char> out;
+#define WF_FILM_PACK(type, name, extent, what) \
+    pack_planes(st.name, pixels, WF_FILM_PLANES_##extent(st.bounce_layers), first, count, out);
+    WF_FILM_BUFFERS(WF_FILM_PACK)
+#undef WF_FILM_PACK
+    return out;
+}
+
+size_t unpack_pixels(const unsigned char* bytes, size_t size, uint32_t first, uint32_t count, FilmState& st) {
+    const size_t pixels = size_t{st.width} * st.height;
+    size_t read = 0;
+#define WF_FILM_UNPACK(type, name, extent, what)                                                             \
+    read += unpack_planes(bytes + read, size - read, pixels, WF_FILM_PLANES_##extent(st.bounce_layers), first, \
+                          count, st.name);
+    WF_FILM_BUFFERS(WF_FILM_UNPACK)
+#undef WF_FILM_UNPACK
+    return read;
+}
 
 size_t Film::bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers) {
     const size_t pixels = size_t{width} * height;

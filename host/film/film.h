@@ -31,6 +31,13 @@ struct FilmState {
 #undef WF_FILM_STATE_MEMBER
 };
 
+// Pixels [first, first + count) of every buffer of `state`, buffer by buffer
+// and plane by plane, as bytes: a unit's sums sent to another MPI rank. The
+// unpacking writes them to the same pixels of `state`, which has the image's
+// size, and returns the bytes it read.
+std::vector<unsigned char> pack_pixels(const FilmState& state, uint32_t first, uint32_t count);
+size_t unpack_pixels(const unsigned char* bytes, size_t size, uint32_t first, uint32_t count, FilmState& state);
+
 struct FilmReadout {
     Image mean;                      // linear radiance; black where a pixel has no sample yet
     Image variance_of_mean;          // s² / n per channel; 0 where n < 2

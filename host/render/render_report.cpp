@@ -25,7 +25,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
         << s.emissive_triangles << " emissive triangles, " << s.punctual_lights << " punctual lights, "
         << (s.environment ? "an environment" : "no environment") << "\n";
     out << "features   " << s.features << "\n";
-    out << "device     " << s.device << "\n";
+    out << "device     " << s.device;
+    if (s.ranks > 1) out << " on " << s.ranks << " MPI ranks";
+    out << "\n";
     for (size_t d = 0; d < s.shares.size(); ++d) {
         const DeviceShare& share = s.shares[d];
         out << std::setprecision(1) << "  [" << d << "]      " << share.device << ": "

@@ -49,6 +49,7 @@ struct RenderSummary {
     int interrupted_by = 0; // the signal that stopped the render early, or 0
     std::string pool_note;  // why the pool is not what was asked for (or the default), when it is not
     std::vector<DeviceShare> shares; // each device's part, when several took part
+    int ranks = 1;                   // MPI ranks the devices were on
 };
 
 void print_report(std::ostream& out, const RenderSummary& s);

@@ -21,6 +21,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
                           {"busy_seconds", d.busy_seconds},
                           {"transfer_seconds", d.transfer_seconds}});
     j["device_shares"] = shares; // empty with one device
+    j["ranks"] = s.ranks;
     j["features"] = s.features;
     j["triangles"] = s.triangles;
     j["width"] = s.width;
