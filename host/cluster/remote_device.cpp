@@ -27,7 +27,17 @@ void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t spp, Fil
     }
     send_bytes(message.data(), message.size(), rank_, index_, what);
 
-    const std::vector<unsigned char> reply = receive_bytes(rank_, index_, what);
+    // Stopped (Ctrl-C: mpirun ends every rank a second after its signal),
+    // this rank waits a moment for the unit, then writes what it has without
+    // it: the unit's pixels keep their sums from before it.
+    std::optional<std::chrono::steady_clock::time_point> stop_seen;
+    const std::optional<std::vector<unsigned char>> received = receive_bytes_unless(rank_, index_, what, [&] {
+        if (!(stop_ && stop_->load() != 0)) return false;
+        if (!stop_seen) stop_seen = std::chrono::steady_clock::now();
+        return std::chrono::steady_clock::now() - *stop_seen > std::chrono::milliseconds(kStoppedWaitMs);
+    });
+    if (!received) return;
+    const std::vector<unsigned char>& reply = *received;
     UnitReplyStatus status;
     UnitCounts wire{};
     if (reply.size() < sizeof status) throw std::runtime_error(what + ": a short reply");

@@ -23,6 +23,9 @@ public:
     // Moving sums both ways: the messages and the device's own transfers there.
     double transfer_seconds() const override { return message_seconds_ + remote_transfer_seconds_; }
 
+    // How long a stopped render waits for a unit in flight on another rank.
+    static constexpr int kStoppedWaitMs = 300;
+
 
 private:
     int rank_, index_;

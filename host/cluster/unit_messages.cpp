@@ -2,9 +2,11 @@
 // messages are probed for their size before they are received.
 #include "cluster/unit_messages.h"
 
+#include <chrono>
 #include <climits>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <mpi.h>
 
@@ -83,14 +85,33 @@ void send_bytes(const void* data, size_t size, int rank, int tag, const std::str
     check_mpi(MPI_Send(data, static_cast<int>(size), MPI_BYTE, rank, tag, MPI_COMM_WORLD), what);
 }
 
-std::vector<unsigned char> receive_bytes(int rank, int tag, const std::string& what) {
-    MPI_Status status;
-    check_mpi(MPI_Probe(rank, tag, MPI_COMM_WORLD, &status), what);
+namespace {
+
+std::vector<unsigned char> receive_probed(int rank, int tag, const MPI_Status& status, const std::string& what) {
     int size = 0;
     MPI_Get_count(&status, MPI_BYTE, &size);
     std::vector<unsigned char> bytes(static_cast<size_t>(size));
     check_mpi(MPI_Recv(bytes.data(), size, MPI_BYTE, rank, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE), what);
     return bytes;
+}
+
+} // namespace
+
+std::vector<unsigned char> receive_bytes(int rank, int tag, const std::string& what) {
+    MPI_Status status;
+    check_mpi(MPI_Probe(rank, tag, MPI_COMM_WORLD, &status), what);
+    return receive_probed(rank, tag, status, what);
+}
+
+std::optional<std::vector<unsigned char>> receive_bytes_unless(int rank, int tag, const std::string& what,
+                                                               const std::function<bool()>& give_up) {
+    MPI_Status status;
+    for (int arrived = 0;;) {
+        check_mpi(MPI_Iprobe(rank, tag, MPI_COMM_WORLD, &arrived, &status), what);
+        if (arrived) return receive_probed(rank, tag, status, what);
+        if (give_up()) return std::nullopt;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
 }
 
 } // namespace wf

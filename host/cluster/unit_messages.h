@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,5 +63,9 @@ RankSetup decode_setup(const std::string& text);
 void send_bytes(const void* data, size_t size, int rank, int tag, const std::string& what);
 // A whole message of any size from `rank` under `tag`.
 std::vector<unsigned char> receive_bytes(int rank, int tag, const std::string& what);
+// The same, unless `give_up` says to stop waiting (checked every millisecond
+// or so while none has arrived): then nothing.
+std::optional<std::vector<unsigned char>> receive_bytes_unless(int rank, int tag, const std::string& what,
+                                                               const std::function<bool()>& give_up);
 
 } // namespace wf
