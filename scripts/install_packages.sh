@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project builds with (Open MPI for
 # rendering over several machines; a build without it renders in one
-# process), and any named as
-# arguments (the fuzz build's clang), where missing. Shared by setup.sh,
-# fuzz.sh and sanitize.sh, so each works alone on a fresh Debian 12.
+# process), and any named as arguments (the fuzz build's clang), where
+# missing. Shared by setup.sh, fuzz.sh and sanitize.sh, so each works alone on
+# a fresh Debian 12.
 set -euo pipefail
 
 packages=(cmake g++ pkg-config pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libglm-dev
