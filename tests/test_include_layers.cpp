@@ -21,8 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // From the glTF file to the image: each layer may use those before it.
-constexpr std::array<const char*, 10> kHostLayers = {"base",   "image", "scene",      "gltf",   "bvh",
-                                                     "device", "film",  "integrator", "render", "cli"};
+constexpr std::array<const char*, 12> kHostLayers = {"base",   "image",      "scene",  "gltf", "bvh",     "device",
+                                                     "film",   "integrator", "render", "cli",  "cluster", "app"};
 constexpr const char* kFirstOpenClLayer = "device";
 
 int layer_rank(const std::string& name) {

@@ -1,5 +1,5 @@
 // render_command.h — `wavefront render`, `wavefront devices` and
-// `wavefront cache`: what main.cpp runs for each command.
+// `wavefront cache`: what app/main.cpp runs for each command.
 #pragma once
 
 #include <functional>

@@ -103,7 +103,7 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
     params_.scene_diameter = scene.scene_diameter;
     params_.environment = scene.environment;
     if (settings.pool_size == 0 || settings.pool_size > params_.pixel_count)
-        throw std::logic_error("an integrator's pool must be chosen first (render/renderer.h)");
+        throw std::logic_error("an integrator's pool must be chosen first (render/device_renderer.h)");
     if (settings.local_size < WF_PATH_LENGTH_BUCKETS)
         throw InputError("local size " + std::to_string(settings.local_size) + " is below " +
                          std::to_string(WF_PATH_LENGTH_BUCKETS) + ", the path-length histogram's buckets");

@@ -60,7 +60,7 @@ struct RenderSettings {
     uint32_t spp = 16;
     uint32_t max_depth = WF_UNLIMITED_DEPTH;
     uint32_t seed = 0;
-    uint32_t pool_size = 0; // 0: chosen from the image and the device (render/renderer.h)
+    uint32_t pool_size = 0; // 0: chosen from the image and the device (render/device_renderer.h)
     uint32_t roulette_depth = 3;
     uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
     uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
