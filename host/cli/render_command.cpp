@@ -173,7 +173,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
     // Checked before the long set-up.
-    ImageOptions shaping = image_options(options, size);
+    const ImageOptions shaping = image_options(options, size);
     std::optional<PartialRender> resumed;
     if (!options.resume.empty()) {
         resumed = read_partial_render(options.resume);
