@@ -108,9 +108,11 @@ ImageOptions resume_checks(ImageOptions options) {
 // Every file the render may write, checked before any work starts: the
 // image, the partial render that Ctrl-C or --checkpoint-every writes beside
 // it, the CSV report and the statistics.
-void check_outputs(const RenderOptions& o) {
-    check_can_write(o.output);
-    check_can_write_file(partial_render_path(o.output));
+void check_outputs(const RenderOptions& o, bool image) {
+    if (image) {
+        check_can_write(o.output);
+        check_can_write_file(partial_render_path(o.output));
+    }
     if (!o.report_csv.empty()) check_can_write_file(o.report_csv);
     if (!o.stats_json.empty()) check_can_write_file(o.stats_json);
 }
@@ -153,17 +155,17 @@ Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
     return scene;
 }
 
-RenderSettings device_settings(const RenderOptions& options) {
+RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop) {
     RenderSettings settings = options.settings;
     settings.cache_dir = cache_directory(options.cache_dir);
-    settings.stop = &install_interrupt_handlers();
+    settings.stop = stop;
     return settings;
 }
 
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log,
-                         const std::function<void(Renderer&, ImageSize)>& add_workers) {
+                         const RenderHooks& hooks) {
     const auto start = std::chrono::steady_clock::now();
-    check_outputs(options);
+    check_outputs(options, hooks.write_image);
     Scene scene = load_render_scene(options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
@@ -183,7 +185,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
             throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
                              " already holds " + std::to_string(held) + " spp; ask for more to go on");
     }
-    if (options.settings.bounce_layers && !holds_float_radiance(options.output))
+    if (options.settings.bounce_layers && hooks.write_image && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
     std::optional<Image> reference;
     if (!options.reference.empty()) {
@@ -197,7 +199,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const std::vector<OpenClDevice> devices = open_devices(options.device);
     std::vector<const OpenClDevice*> chosen;
     for (const OpenClDevice& d : devices) chosen.push_back(&d);
-    const RenderSettings settings = device_settings(options);
+    const std::atomic<int>* stop = hooks.stop ? hooks.stop : &install_interrupt_handlers();
+    const RenderSettings settings = device_settings(options, stop);
     // Compiling takes seconds on a cold cache: say so on a terminal, then erase the line.
     const bool terminal = ::isatty(STDERR_FILENO);
     if (terminal && !options.quiet)
@@ -205,7 +208,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     Renderer renderer(chosen, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
-    if (add_workers) add_workers(renderer, size);
+    if (hooks.add_workers) hooks.add_workers(renderer, size);
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;
     progress.stop = settings.stop;
@@ -221,10 +224,14 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const ProgressGoal goal{uint64_t{size.width} * size.height, progress.start_spp, progress.max_spp,
                             progress.time_budget};
     ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, goal);
-    if (!options.quiet) renderer.on_progress([&](const RenderStats& s) { progress_line.update(s); });
+    renderer.on_progress([&](const RenderStats& s) {
+        if (!options.quiet) progress_line.update(s);
+        if (hooks.on_progress) hooks.on_progress(s);
+    });
     const std::string partial_path = partial_render_path(options.output);
     bool partial_written = false;
     auto write_partial = [&] {
+        if (!hooks.write_image) return;
         metadata.samples_per_pixel = renderer.read().min_samples;
         metadata.render_seconds = renderer.stats().seconds;
         write_partial_render(partial_path, renderer.film_state(), metadata);
@@ -235,6 +242,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
         progress_line.clear(); // stdout and stderr may share the terminal
         checkpoints.add(c);
+        if (hooks.on_checkpoint) hooks.on_checkpoint(c);
         if (c.relmse_estimate) progress_line.set_error(*c.relmse_estimate);
         const auto now = std::chrono::steady_clock::now();
         if (options.checkpoint_every > 0.0 &&
@@ -250,35 +258,37 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.ranks > 1) // the other ranks' devices are named by their rank already
         for (DeviceShare& share : summary.shares)
             if (share.device.rfind("rank ", 0) != 0) share.device = "rank 0: " + share.device;
-    summary.interrupted_by = interrupt_signal();
+    summary.interrupted_by = stop->load();
     summary.spp = film.min_samples;
     summary.resumed_from_spp = progress.start_spp;
-    metadata.samples_per_pixel = film.min_samples;
-    metadata.render_seconds = summary.stats.seconds;
-    metadata.interrupted = summary.interrupted_by != 0;
-    // Stopped before a sample finished: what is on disk (an older image, the
-    // partial it resumed from) is worth more than nothing, so nothing is written.
-    const bool computed = summary.stats.samples > 0;
-    if (summary.interrupted_by && !computed) {
-        log << "interrupted before any sample finished: nothing written\n";
-    } else {
-        write_image(options.output, film.mean, metadata, bounce_layers(film));
-    }
-    std::error_code ignored;
-    if (summary.interrupted_by && computed) {
-        write_partial();
-        log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and " << partial_path
-            << "; go on with --resume " << partial_path << "\n";
-    } else if (!summary.interrupted_by) {
-        // The image is whole: the partial it was checkpointed to, or resumed from, is stale.
-        if (partial_written || (resumed && std::filesystem::equivalent(options.resume, partial_path, ignored)))
-            std::filesystem::remove(partial_path, ignored);
+    if (hooks.write_image) {
+        metadata.samples_per_pixel = film.min_samples;
+        metadata.render_seconds = summary.stats.seconds;
+        metadata.interrupted = summary.interrupted_by != 0;
+        // Stopped before a sample finished: what is on disk (an older image, the
+        // partial it resumed from) is worth more than nothing, so nothing is written.
+        const bool computed = summary.stats.samples > 0;
+        if (summary.interrupted_by && !computed)
+            log << "interrupted before any sample finished: nothing written\n";
+        else
+            write_image(options.output, film.mean, metadata, bounce_layers(film));
+        std::error_code ignored;
+        if (summary.interrupted_by && computed) {
+            write_partial();
+            log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and "
+                << partial_path << "; go on with --resume " << partial_path << "\n";
+        } else if (!summary.interrupted_by) {
+            // The image is whole: the partial it was checkpointed to, or resumed from, is stale.
+            if (partial_written || (resumed && std::filesystem::equivalent(options.resume, partial_path, ignored)))
+                std::filesystem::remove(partial_path, ignored);
+        }
     }
 
     summary.scene = options.scene;
     summary.output = options.output;
     summary.times.load = load_seconds;
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, summary);
+    if (hooks.film) *hooks.film = film;
     return summary;
 }
 

@@ -2,29 +2,46 @@
 // `wavefront cache`: what app/main.cpp runs for each command.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <iosfwd>
 
 #include "cli/cli.h"
+#include "render/progressive_render.h"
 #include "render/render_report.h"
 #include "render/renderer.h"
 
 namespace wf {
 
+// What a caller other than the command line adds to a render: rank 0 of an
+// MPI render (host/cluster/), the Python module (host/python/).
+struct RenderHooks {
+    // Called once the renderer is ready, before it resumes or renders.
+    std::function<void(Renderer&, ImageSize)> add_workers;
+    // Set (to a signal's number) to stop the render as Ctrl-C does; without
+    // it, Ctrl-C and SIGTERM stop it through signal handlers.
+    const std::atomic<int>* stop = nullptr;
+    // As the render goes: the statistics at every read of the counters, and each checkpoint.
+    std::function<void(const RenderStats&)> on_progress;
+    std::function<void(const Checkpoint&)> on_checkpoint;
+    // Receives the final film. With `write_image` false, neither the image
+    // nor a partial render is written (nor checked beforehand).
+    FilmReadout* film = nullptr;
+    bool write_image = true;
+};
+
 // Runs one render as the options say: checkpoints as a table on `out` (and in
 // the CSV file), notes on `log`, the image written, and the summary returned.
-// `add_workers`, if given, is called once the renderer is ready and before it
-// resumes or renders (rank 0 adds the other ranks' devices there).
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log,
-                         const std::function<void(Renderer&, ImageSize)>& add_workers = {});
+                         const RenderHooks& hooks = {});
 
 // The scene the options name, with its environment and a light if it has
 // none: what every rank of a render loads. Warnings go to `log`.
 Scene load_render_scene(const RenderOptions& options, std::ostream& log);
 
-// The options' render settings with the cache directory resolved and the
-// interrupt handlers' flag as the stop flag.
-RenderSettings device_settings(const RenderOptions& options);
+// The options' render settings with the cache directory resolved and `stop`
+// as the stop flag.
+RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop);
 
 // `wavefront devices`: every OpenCL device with its index.
 void print_devices(std::ostream& out);

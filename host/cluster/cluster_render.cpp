@@ -31,10 +31,11 @@ int render_on_ranks(const RenderOptions& options, std::ostream& out, std::ostrea
     RenderSummary summary;
     {
         OtherRanks others(world.size());
-        summary = run_render(on_ranks, out, log, [&](Renderer& renderer, ImageSize size) {
-            renderer.add_workers(
-                others.join(file_fingerprint(options.scene), size, &install_interrupt_handlers()));
-        });
+        RenderHooks hooks;
+        hooks.add_workers = [&](Renderer& renderer, ImageSize size) {
+            renderer.add_workers(others.join(file_fingerprint(options.scene), size, &install_interrupt_handlers()));
+        };
+        summary = run_render(on_ranks, out, log, hooks);
     } // every device of the other ranks is told the work is over
     print_report(out, summary);
     return summary.interrupted_by ? 128 + summary.interrupted_by : 0;

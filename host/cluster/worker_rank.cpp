@@ -70,7 +70,7 @@ int serve_units(const RenderOptions& options) {
         const Scene scene = load_render_scene(options, quiet);
         const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
         devices = open_devices(options.device);
-        const RenderSettings settings = device_settings(options);
+        const RenderSettings settings = device_settings(options, &install_interrupt_handlers());
         const SceneBuild build(scene);
         const SceneCamera camera = scene.camera ? *scene.camera : frame_bounds(scene.bounds());
         for (const OpenClDevice& d : devices)
