@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/setup.sh [--tests] — installs the Debian packages the project needs
-# (when missing) and builds the renderer, build/wavefront, first of all, so
-# that a first picture needs no more. --tests then builds the test suite too
+# (when missing) and builds the renderer, build/wavefront, and the Python
+# module (`import wavefront`) first of all, so that a first picture needs no
+# more. --tests then builds the test suite too
 # (build/wavefront_tests and the tools its tests run). Safe to run again: it
 # only installs and rebuilds what changed.
 set -euo pipefail
@@ -14,6 +15,21 @@ case "${1:-}" in
 esac
 
 scripts/install_packages.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build --target wavefront -j"$(nproc)"
+# The Python module is built for the python3 a user types (Debian's, or one
+# of pyenv's), which needs NumPy, and pytest for the tests: Debian's come from
+# the packages above, another interpreter's from PyPI. NumPy 1: Debian 12's
+# pybind11 (2.10) predates NumPy 2's array API.
+python="$(python3 -c 'import sys; print(sys.executable)')"
+"$python" -c "import numpy, sys; sys.exit(numpy.__version__ >= '2')" 2>/dev/null ||
+  "$python" -m pip install -q "numpy<2"
+if ((tests)); then "$python" -c "import pytest" 2>/dev/null || "$python" -m pip install -q pytest; fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE="$python"
+cmake --build build --target wavefront wavefront_python -j"$(nproc)"
+# `import wavefront` from anywhere: a .pth file in the interpreter's
+# site-packages names build/python (the user's own site-packages where that
+# one is not writable).
+site="$("$python" -c 'import sysconfig; print(sysconfig.get_path("purelib"))')"
+mkdir -p "$site" 2>/dev/null || true
+[ -w "$site" ] || site="$("$python" -m site --user-site)" && mkdir -p "$site"
+echo "$PWD/build/python" > "$site/wavefront.pth"
 if ((tests)); then cmake --build build -j"$(nproc)"; fi

@@ -21,8 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // From the glTF file to the image: each layer may use those before it.
-constexpr std::array<const char*, 12> kHostLayers = {"base",   "image",      "scene",  "gltf", "bvh",     "device",
-                                                     "film",   "integrator", "render", "cli",  "cluster", "app"};
+constexpr std::array<const char*, 13> kHostLayers = {"base",   "image",      "scene",  "gltf", "bvh",
+                                                     "device", "film",       "integrator", "render", "cli",
+                                                     "cluster", "app", "python"};
 constexpr const char* kFirstOpenClLayer = "device";
 
 int layer_rank(const std::string& name) {

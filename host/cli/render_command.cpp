@@ -143,6 +143,11 @@ std::string cache_directory(const std::string& requested) {
 
 Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
     Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    light_for_render(scene, options, log);
+    return scene;
+}
+
+void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& log) {
     if (!options.environment.empty()) {
         auto map = std::make_shared<EnvironmentMap>(
             load_environment(options.environment, options.environment_scale, options.environment_rotate));
@@ -152,7 +157,6 @@ Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
     if (options.environment_uniform > 0.0f)
         scene.environment = std::make_shared<EnvironmentMap>(constant_environment(options.environment_uniform));
     light_unlit_scene(scene);
-    return scene;
 }
 
 RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop) {
@@ -166,7 +170,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
                          const RenderHooks& hooks) {
     const auto start = std::chrono::steady_clock::now();
     check_outputs(options, hooks.write_image);
-    Scene scene = load_render_scene(options, log);
+    Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera});
+    light_for_render(scene, options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";

@@ -16,6 +16,9 @@ namespace wf {
 // What a caller other than the command line adds to a render: rank 0 of an
 // MPI render (host/cluster/), the Python module (host/python/).
 struct RenderHooks {
+    // The scene, loaded already from options.scene (with options.camera); a
+    // copy of it is lit as the options say.
+    const Scene* scene = nullptr;
     // Called once the renderer is ready, before it resumes or renders.
     std::function<void(Renderer&, ImageSize)> add_workers;
     // Set (to a signal's number) to stop the render as Ctrl-C does; without
@@ -36,8 +39,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
                          const RenderHooks& hooks = {});
 
 // The scene the options name, with its environment and a light if it has
-// none: what every rank of a render loads. Warnings go to `log`.
+// none (light_for_render): what every rank of a render loads. Warnings go to `log`.
 Scene load_render_scene(const RenderOptions& options, std::ostream& log);
+void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& log);
 
 // The options' render settings with the cache directory resolved and `stop`
 // as the stop flag.

@@ -1,0 +1,297 @@
+// module.cpp — `import wavefront`: the renderer from Python, for sweeps and
+// plots. render() takes every flag of `wavefront render` as a keyword
+// (--pool-size as pool_size=...), parsed by the command line's own parser, so
+// values are checked and errors worded as there; it renders through the
+// command's run_render() and returns the image, the bounce layers and the
+// statistics as NumPy arrays and plain objects. Errors arrive as
+// wavefront.InputError (a ValueError: the input is at fault, exit status 2 on
+// the command line) or wavefront.DeviceError (a RuntimeError: the machine),
+// with the command line's one-line message.
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <optional>
+#include <sstream>
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "base/errors.h"
+#include "cli/cli.h"
+#include "cli/exit_status.h"
+#include "cli/render_command.h"
+#include "device/opencl_device.h"
+#include "gltf/gltf_loader.h"
+#include "image/image_io.h"
+
+namespace py = pybind11;
+
+namespace wf {
+namespace {
+
+// A loaded scene, and the file it came from.
+struct PyScene {
+    std::string path;
+    int camera = -1;
+    Scene scene;
+};
+
+// The render's result as Python sees it.
+struct PyResult {
+    py::array_t<float> image, variance;
+    py::dict bounce_layers;
+    RenderSummary summary;
+    std::vector<Checkpoint> checkpoints;
+};
+
+py::array_t<float> to_array(const Image& image) {
+    py::array_t<float> a({size_t{image.height}, size_t{image.width}, size_t{3}});
+    std::copy(image.rgb.begin(), image.rgb.end(), a.mutable_data());
+    return a;
+}
+
+// The keywords as command-line words: name_with_underscores=value becomes
+// --name-with-underscores value; True a flag alone; False and None nothing;
+// a list or tuple its items joined by commas (aov=["bounces"]).
+std::vector<std::string> render_words(const std::string& scene, const py::kwargs& options) {
+    std::vector<std::string> words{"wavefront", "render", scene};
+    for (const auto& [key, value] : options) {
+        std::string flag = "--" + py::str(key).cast<std::string>();
+        std::replace(flag.begin(), flag.end(), '_', '-');
+        if (value.is_none() || (py::isinstance<py::bool_>(value) && !value.cast<bool>())) continue;
+        words.push_back(flag);
+        if (py::isinstance<py::bool_>(value)) continue;
+        if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+            std::string joined;
+            for (const py::handle item : value) joined += (joined.empty() ? "" : ",") + py::str(item).cast<std::string>();
+            words.push_back(joined);
+        } else {
+            words.push_back(py::str(value).cast<std::string>());
+        }
+    }
+    return words;
+}
+
+RenderOptions parse_render(const std::string& scene, const py::kwargs& options) {
+    const std::vector<std::string> words = render_words(scene, options);
+    std::vector<const char*> argv;
+    for (const std::string& w : words) argv.push_back(w.c_str());
+    const CommandLine cl = parse_command_line(static_cast<int>(argv.size()), argv.data());
+    if (cl.command != Command::Render) throw InputError("render: " + cl.help);
+    return cl.render;
+}
+
+// Ctrl-C during a render: Python runs its own handler only between bytecodes,
+// which a render in C++ never reaches, so the render installs one that stops it.
+std::atomic<int> g_stop{0};
+extern "C" void stop_render(int sig) { g_stop.store(sig); }
+
+class InterruptScope {
+public:
+    InterruptScope() {
+        g_stop.store(0);
+        struct sigaction action {};
+        action.sa_handler = stop_render;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &previous_);
+    }
+    ~InterruptScope() { sigaction(SIGINT, &previous_, nullptr); }
+
+private:
+    struct sigaction previous_ {};
+};
+
+PyResult render(py::object scene, std::optional<py::function> progress, const py::kwargs& options) {
+    const bool loaded = py::isinstance<PyScene>(scene);
+    const std::string path = loaded ? scene.cast<const PyScene&>().path : py::str(scene).cast<std::string>();
+    RenderOptions parsed = parse_render(path, options);
+    const bool write_image = options.contains("output") || options.contains("o");
+    if (!options.contains("quiet")) parsed.quiet = true; // no table, report or progress line on the terminal
+    if (loaded && parsed.camera != scene.cast<const PyScene&>().camera)
+        throw InputError("render: camera " + std::to_string(parsed.camera) + " is not the one " + path +
+                         " was loaded with; load it again with that camera");
+
+    PyResult result;
+    FilmReadout film;
+    RenderHooks hooks;
+    hooks.scene = loaded ? &scene.cast<const PyScene&>().scene : nullptr;
+    hooks.stop = &g_stop;
+    hooks.film = &film;
+    hooks.write_image = write_image;
+    hooks.on_checkpoint = [&](const Checkpoint& c) { result.checkpoints.push_back(c); };
+    std::optional<py::error_already_set> raised; // by the callback, raised again once the render has stopped
+    if (progress)
+        hooks.on_progress = [&](const RenderStats& s) {
+            py::gil_scoped_acquire gil;
+            if (raised) return;
+            try {
+                RenderStats counts; // without the counter reads, which grow all render long
+                counts.add(s, false);
+                counts.seconds = s.seconds;
+                (*progress)(counts);
+            } catch (py::error_already_set& e) {
+                raised = std::move(e);
+                g_stop.store(SIGINT);
+            }
+        };
+    {
+        InterruptScope interrupt;
+        py::gil_scoped_release released;
+        std::ostream quiet(nullptr);
+        result.summary = run_render(parsed, quiet, quiet, hooks);
+    }
+    if (raised) throw std::move(*raised);
+    if (result.summary.interrupted_by) {
+        PyErr_SetNone(PyExc_KeyboardInterrupt);
+        throw py::error_already_set();
+    }
+    result.image = to_array(film.mean);
+    result.variance = to_array(film.variance_of_mean);
+    for (size_t l = 0; l < film.bounce_layers.size(); ++l) {
+        const bool last = l + 1 == film.bounce_layers.size();
+        result.bounce_layers[py::str("bounce" + std::to_string(l) + (last ? "plus" : ""))] = to_array(film.bounce_layers[l]);
+    }
+    return result;
+}
+
+// The counter reads as rows of regenerate, extend, shadow, continue,
+// finished, closest rays, shadow rays, samples (the stats JSON's columns).
+py::array_t<uint32_t> counter_reads(const RenderStats& s) {
+    py::array_t<uint32_t> a({s.counter_reads.size(), size_t{8}});
+    auto rows = a.mutable_unchecked<2>();
+    for (size_t i = 0; i < s.counter_reads.size(); ++i) {
+        const CounterSnapshot& c = s.counter_reads[i];
+        const uint32_t row[8] = {c.queues[WF_QUEUE_REGENERATE], c.queues[WF_QUEUE_EXTEND], c.queues[WF_QUEUE_SHADOW],
+                                 c.queues[WF_QUEUE_CONTINUE],   c.queues[WF_QUEUE_FINISHED], c.closest_rays,
+                                 c.shadow_rays,                 c.samples};
+        for (int k = 0; k < 8; ++k) rows(i, k) = row[k];
+    }
+    return a;
+}
+
+py::dict stages(const RenderStats& s) {
+    py::dict d;
+    for (const StageTime& t : s.stages)
+        if (t.launches) d[py::str(t.name)] = py::dict(py::arg("launches") = t.launches, py::arg("seconds") = t.seconds);
+    return d;
+}
+
+} // namespace
+} // namespace wf
+
+PYBIND11_MODULE(wavefront, m) {
+    using namespace wf;
+    m.doc() = "Wavefront path tracing on OpenCL devices: render glTF scenes and read their statistics.";
+
+    static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+    static py::exception<DeviceError> device_error(m, "DeviceError", PyExc_RuntimeError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        if (!p) return;
+        try {
+            std::rethrow_exception(p);
+        } catch (py::error_already_set&) {
+            throw;
+        } catch (py::builtin_exception&) {
+            throw;
+        } catch (...) {
+            const Failure failure = describe_exception();
+            PyObject* type = failure.exit_code == 2 ? input_error.ptr() : device_error.ptr();
+            PyErr_SetString(type, failure.message.c_str());
+        }
+    });
+
+    py::class_<DeviceInfo>(m, "Device", "An OpenCL device, as `wavefront devices` lists it")
+        .def_readonly("index", &DeviceInfo::index)
+        .def_readonly("name", &DeviceInfo::name)
+        .def_readonly("type", &DeviceInfo::type)
+        .def_readonly("platform", &DeviceInfo::platform)
+        .def_readonly("version", &DeviceInfo::version)
+        .def_readonly("compute_units", &DeviceInfo::compute_units)
+        .def_readonly("global_memory", &DeviceInfo::global_memory)
+        .def("__repr__", [](const DeviceInfo& d) { return "<wavefront.Device " + std::to_string(d.index) + ": " + d.name + ">"; });
+    m.def("devices", &list_devices, "Every OpenCL device of every platform, with its index for device=");
+
+    py::class_<PyScene>(m, "Scene", "A glTF scene, loaded and checked")
+        .def_readonly("path", &PyScene::path)
+        .def_property_readonly("triangles", [](const PyScene& s) { return s.scene.triangle_count(); })
+        .def_property_readonly("materials", [](const PyScene& s) { return s.scene.materials.size(); })
+        .def_property_readonly("punctual_lights", [](const PyScene& s) { return s.scene.punctual_lights.size(); })
+        .def_property_readonly("has_camera", [](const PyScene& s) { return s.scene.camera.has_value(); })
+        .def_property_readonly("warnings", [](const PyScene& s) { return s.scene.warnings; })
+        .def("__repr__", [](const PyScene& s) {
+            return "<wavefront.Scene " + s.path + ": " + std::to_string(s.scene.triangle_count()) + " triangles>";
+        });
+    m.def(
+        "load_scene",
+        [](const std::string& path, int camera) {
+            return PyScene{path, camera, load_gltf(path, LoadOptions{camera})};
+        },
+        py::arg("path"), py::arg("camera") = -1, "Loads a .gltf or .glb file; camera=-1 is its first camera");
+
+    py::class_<RenderStats>(m, "Stats", "What a render did: counts, kernel times, queue counters")
+        .def_readonly("seconds", &RenderStats::seconds, "wall time rendering")
+        .def_readonly("samples", &RenderStats::samples)
+        .def_readonly("closest_rays", &RenderStats::closest_rays)
+        .def_readonly("shadow_rays", &RenderStats::shadow_rays)
+        .def_readonly("nonfinite_samples", &RenderStats::nonfinite_samples)
+        .def_readonly("iterations", &RenderStats::iterations)
+        .def_readonly("pool_size", &RenderStats::pool_size)
+        .def_readonly("pool_bytes", &RenderStats::pool_bytes)
+        .def_property_readonly("integrator", [](const RenderStats& s) { return integrator_name(s.integrator); })
+        .def_property_readonly("schedule", [](const RenderStats& s) { return schedule_name(s.schedule); })
+        .def_property_readonly("kernel_seconds", &RenderStats::kernel_seconds)
+        .def_property_readonly("pool_occupancy", &RenderStats::pool_occupancy)
+        .def_property_readonly("stages", &stages, "per stage kernel: launches and seconds (profiling events)")
+        .def_property_readonly("path_lengths",
+                               [](const RenderStats& s) { return py::array_t<uint64_t>(s.path_lengths.size(), s.path_lengths.data()); },
+                               "finished paths by bounces: bucket 0 holds 0, bucket b holds [2^(b-1), 2^b)")
+        .def_property_readonly("counter_reads", &counter_reads,
+                               "one row per read of the counters: " "regenerate, extend, shadow, continue, finished "
+                               "as read, then closest rays, shadow rays and samples since the previous read")
+        .def_property_readonly_static("counter_read_columns", [](py::object) {
+            return std::vector<std::string>{"regenerate", "extend", "shadow", "continue", "finished",
+                                            "closest_rays", "shadow_rays", "samples"};
+        });
+
+    py::class_<DeviceShare>(m, "DeviceShare", "One device's part in a render over several")
+        .def_readonly("device", &DeviceShare::device)
+        .def_readonly("samples", &DeviceShare::samples)
+        .def_readonly("units", &DeviceShare::units)
+        .def_readonly("busy_seconds", &DeviceShare::busy_seconds)
+        .def_readonly("transfer_seconds", &DeviceShare::transfer_seconds);
+
+    py::class_<Checkpoint>(m, "Checkpoint", "The state after a round: time, spp and error")
+        .def_readonly("seconds", &Checkpoint::seconds)
+        .def_readonly("spp", &Checkpoint::spp)
+        .def_property_readonly("relmse", [](const Checkpoint& c) { return c.error ? std::optional<double>(c.error->relmse) : std::nullopt; })
+        .def_readonly("relmse_estimate", &Checkpoint::relmse_estimate);
+
+    py::class_<PyResult>(m, "Result", "A finished render")
+        .def_readonly("image", &PyResult::image, "linear radiance, height x width x 3, float32")
+        .def_readonly("variance", &PyResult::variance, "the variance of each pixel's mean")
+        .def_readonly("bounce_layers", &PyResult::bounce_layers, "with aov='bounces': name -> image")
+        .def_readonly("checkpoints", &PyResult::checkpoints)
+        .def_property_readonly("stats", [](const PyResult& r) { return r.summary.stats; })
+        .def_property_readonly("spp", [](const PyResult& r) { return r.summary.spp; })
+        .def_property_readonly("device", [](const PyResult& r) { return r.summary.device; })
+        .def_property_readonly("features", [](const PyResult& r) { return r.summary.features; })
+        .def_property_readonly("device_bytes", [](const PyResult& r) { return r.summary.device_bytes; })
+        .def_property_readonly("shares", [](const PyResult& r) { return r.summary.shares; })
+        .def_property_readonly("kernel_build_seconds", [](const PyResult& r) { return r.summary.times.kernel_build; })
+        .def_property_readonly("report", [](const PyResult& r) {
+            std::ostringstream out;
+            print_report(out, r.summary);
+            return out.str();
+        }, "the command line's closing report");
+
+    m.def(
+        "read_image", [](const std::string& path) { return to_array(read_image(path)); }, py::arg("path"),
+        "An image file's RGB as linear float32 (8-bit formats are decoded from sRGB), height x width x 3");
+
+    m.def("render", &render, py::arg("scene"), py::arg("progress") = py::none(),
+          "Renders a scene (a path or a Scene) with `wavefront render`'s flags as keywords: spp=64, "
+          "pool_size=65536, schedule='refill', device='all', aov='bounces', output='out.exr', ... "
+          "progress(stats) is called as the render goes; Ctrl-C stops it cleanly and raises KeyboardInterrupt.");
+}

@@ -1,0 +1,124 @@
+"""test_module.py -- `import wavefront` as a scheduling study uses it: the
+image and bounce layers as NumPy arrays with the command line's bytes,
+statistics whose counts agree with one another, every flag as a keyword,
+errors as exceptions with the command line's message, a progress callback,
+and Ctrl-C that stops the render cleanly and raises KeyboardInterrupt.
+Run by ctest (Python.Module) with build/python on PYTHONPATH."""
+
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import pytest
+
+import wavefront
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+CORNELL = os.path.join(ROOT, "scenes", "cornell-box.gltf")
+SMALL = dict(width=48, height=36, spp=4, seed=3)
+
+
+@pytest.fixture(scope="module")
+def cache():
+    with tempfile.TemporaryDirectory() as folder:
+        yield folder
+
+
+def test_devices_are_listed():
+    devices = wavefront.devices()
+    assert devices and devices[0].index == 0
+    assert devices[0].type in ("cpu", "gpu", "accelerator", "other")
+
+
+def test_a_render_gives_the_command_lines_bytes(cache):
+    result = wavefront.render(CORNELL, cache_dir=cache, **SMALL)
+    assert result.image.shape == (36, 48, 3) and result.image.dtype == np.float32
+    assert result.spp == 4 and np.isfinite(result.image).all() and result.image.mean() > 0.1
+    with tempfile.TemporaryDirectory() as folder:
+        out = os.path.join(folder, "cli.exr")
+        subprocess.run([os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront")), "render", CORNELL,
+                        "-o", out, "--cache-dir", cache, "--quiet"] + [f"--{k}={v}" for k, v in SMALL.items()],
+                       check=True)
+        # The module writes the same file when asked, through the same code.
+        written = os.path.join(folder, "module.exr")
+        wavefront.render(CORNELL, output=written, cache_dir=cache, **SMALL)
+        assert np.array_equal(wavefront.read_image(out), result.image)
+        assert np.array_equal(wavefront.read_image(written), result.image)
+
+
+def test_schedules_pool_sizes_and_a_loaded_scene_give_the_same_bytes(cache):
+    scene = wavefront.load_scene(CORNELL)
+    assert scene.triangles == 32 and scene.materials == 4 and scene.has_camera
+    reference = wavefront.render(scene, cache_dir=cache, **SMALL).image
+    for flags in (dict(schedule="refill", pool_size=500), dict(schedule="fullest", local_size=32),
+                  dict(integrator="megakernel")):
+        assert np.array_equal(wavefront.render(CORNELL, cache_dir=cache, **SMALL, **flags).image, reference), flags
+
+
+def test_statistics_agree_with_one_another(cache):
+    result = wavefront.render(CORNELL, cache_dir=cache, schedule="refill", pool_size=1000, aov="bounces", **SMALL)
+    st = result.stats
+    pixels = 48 * 36
+    assert st.samples == pixels * 4 and st.schedule == "refill" and st.pool_size == 1000
+    reads = st.counter_reads
+    assert reads.shape == (st.iterations, len(wavefront.Stats.counter_read_columns))
+    assert reads[:, 5].sum() == st.closest_rays and reads[:, 6].sum() == st.shadow_rays
+    assert reads[:, 7].sum() == st.samples == st.path_lengths.sum()
+    assert set(st.stages) >= {"generate", "intersect", "shade", "accumulate"}
+    assert st.stages["intersect"]["launches"] > 0 and st.kernel_seconds > 0.0
+    assert 0.0 < st.pool_occupancy <= 1.0
+    assert sorted(result.bounce_layers) == [f"bounce{i}" for i in range(7)] + ["bounce7plus"]
+    # The layers add up to the image.
+    total = sum(result.bounce_layers.values())
+    assert np.allclose(total, result.image, rtol=1e-4, atol=1e-5)
+    assert [c.spp for c in result.checkpoints] == [1, 2, 4]
+    assert "samples " in result.report
+
+
+def test_errors_carry_the_command_lines_message(cache):
+    with pytest.raises(wavefront.InputError, match=r"^render: --spp: 0 is not in 1 to 16777216$"):
+        wavefront.render(CORNELL, spp=0)
+    with pytest.raises(ValueError, match="no-such.gltf"):
+        wavefront.render(os.path.join(ROOT, "no-such.gltf"), spp=1)
+    with pytest.raises(wavefront.InputError, match="frobnicate"):
+        wavefront.render(CORNELL, frobnicate=1)
+    with pytest.raises(wavefront.InputError, match="--device 9: no such device"):
+        wavefront.render(CORNELL, device=9, cache_dir=cache, **SMALL)
+
+
+def test_progress_is_reported_and_its_errors_stop_the_render(cache):
+    seen = []
+    wavefront.render(CORNELL, progress=lambda s: seen.append(s.samples), cache_dir=cache, **SMALL)
+    assert seen and seen == sorted(seen) and seen[-1] == 48 * 36 * 4
+
+    def fail(_):
+        raise ZeroDivisionError("from the callback")
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        wavefront.render(CORNELL, progress=fail, cache_dir=cache, **SMALL)
+
+
+# Ctrl-C while a long render runs in another Python: the render stops at
+# once, cleanly, and KeyboardInterrupt reaches the script, which goes on.
+SCRIPT = """
+import sys, wavefront
+started = []
+def progress(stats):
+    if not started:
+        started.append(1)
+        print("rendering", flush=True)
+try:
+    wavefront.render(sys.argv[1], spp=1 << 20, width=64, cache_dir=sys.argv[2], progress=progress)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+"""
+
+
+def test_ctrl_c_stops_the_render_and_raises_keyboard_interrupt(cache):
+    child = subprocess.Popen([sys.executable, "-c", SCRIPT, CORNELL, cache], stdout=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "rendering"  # a sign of life, then the signal
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=300)
+    assert child.returncode == 0 and out.strip() == "interrupted"
