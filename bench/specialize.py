@@ -11,8 +11,9 @@ Usage: python3 bench/specialize.py [--size N] [--spp N]   (from any directory)
 """
 
 import argparse
+import csv
+import json
 import os
-import re
 import subprocess
 import tempfile
 
@@ -26,24 +27,26 @@ SCENES = [
 
 
 def render(scene, extra, out, cache, pocl_cache, args):
+    """One render in a process of its own (PoCL reads its cache folder once a
+    process); its --stats-json statistics and --report checkpoints."""
     env = dict(os.environ, POCL_CACHE_DIR=pocl_cache)
+    stats_path, report_path = out + ".json", out + ".csv"
     command = ["build/wavefront", "render", scene, "--width", str(args.size), "--spp", str(args.spp),
-               "--seed", "7", "--cache-dir", cache, "-o", out] + extra
-    text = subprocess.run(command, cwd=ROOT, env=env, check=True, capture_output=True, text=True).stdout
-    times = re.search(r"load ([\d.]+) s, BVH build ([\d.]+) s .*kernel build ([\d.]+) s", text)
-    first_round = re.search(r"^\s+([\d.]+)\s+1\s", text, re.M)
-    rate = re.search(r"samples\s+\d+ at ([\d.]+) M/s", text)
-    memory = re.search(r"memory\s+([\d.]+) MiB", text)
-    features = re.search(r"^features\s+(.*)$", text, re.M)
-    relmse = re.findall(r"^\s+[\d.]+\s+\d+\s+\S+\s+(\S+)\s", text, re.M)
-    load, bvh, build = (float(x) for x in times.groups())
+               "--seed", "7", "--cache-dir", cache, "-o", out, "--quiet", "--stats-json", stats_path,
+               "--report", report_path] + extra
+    subprocess.run(command, cwd=ROOT, env=env, check=True)
+    with open(stats_path) as f:
+        stats = json.load(f)
+    with open(report_path) as f:
+        checkpoints = list(csv.DictReader(f))
+    times = stats["times"]
     return {
-        "build": build,
-        "first": load + bvh + build + float(first_round.group(1)),
-        "rate": float(rate.group(1)),
-        "memory": float(memory.group(1)),
-        "features": features.group(1),
-        "relmse": relmse[-1] if relmse else "",
+        "build": times["kernel_build"],
+        "first": times["load"] + times["bvh_build"] + times["kernel_build"] + float(checkpoints[0]["seconds"]),
+        "rate": stats["samples"] / times["render"] * 1e-6,
+        "memory": stats["memory"]["device_bytes"] / 1048576.0,
+        "features": stats["features"],
+        "relmse": f"{float(checkpoints[-1]['relmse']):.4e}" if checkpoints[-1]["relmse"] else "",
     }
 
 
