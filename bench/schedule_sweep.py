@@ -9,7 +9,7 @@ schedule and local size, a panel per scene) and schedule-sweep-queues.png
 (each queue's length at every read of the counters).
 
 Usage: python3 bench/schedule_sweep.py [--width N] [--spp N]
-       (from any directory, after scripts/setup.sh; about 6 minutes on 2 cores)
+       (from any directory, after scripts/setup.sh; about 10 minutes on 2 cores)
 """
 
 import argparse
@@ -30,13 +30,13 @@ SCENES = [
                                                  "MetalRoughSpheresNoTextures.gltf")),
 ]
 SCHEDULES = ["refill", "passes", "fullest", "group"]
-POOLS = [4096, 16384, 65536, 262144]
+POOLS = [4096, 16384, 65536]
 LOCAL_SIZES = [32, 64, 128]
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--width", type=int, default=512)
+    parser.add_argument("--width", type=int, default=256)
     parser.add_argument("--spp", type=int, default=4)
     args = parser.parse_args()
     size = dict(width=args.width, height=args.width, spp=args.spp, seed=1)

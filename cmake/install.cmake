@@ -1,0 +1,37 @@
+# install.cmake — `cmake --install build [--prefix P]`: the wavefront
+# program, its man page (help2man, from its own --help) and bash completion,
+# and the renderer as a library, wavefront::wavefront, with its headers and a
+# CMake package, so that find_package(wavefront) works
+# (examples/render_scene builds against it, tests/install/).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set_target_properties(wavefront_core PROPERTIES EXPORT_NAME wavefront OUTPUT_NAME wavefront)
+install(TARGETS wavefront RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS wavefront_core EXPORT wavefrontTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY host/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/wavefront/host FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY include/wavefront/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/wavefront FILES_MATCHING PATTERN "*.h")
+install(EXPORT wavefrontTargets NAMESPACE wavefront:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/wavefront)
+set(WF_WITH_MPI OFF)
+if(TARGET MPI::MPI_CXX AND WF_MPI)
+  set(WF_WITH_MPI ON)
+endif()
+configure_package_config_file(cmake/wavefrontConfig.cmake.in ${CMAKE_BINARY_DIR}/wavefrontConfig.cmake
+                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/wavefront)
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/wavefrontConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/wavefrontConfig.cmake ${CMAKE_BINARY_DIR}/wavefrontConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/wavefront)
+
+find_program(WF_HELP2MAN help2man)
+if(WF_HELP2MAN)
+  add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/wavefront.1
+                     COMMAND ${CMAKE_COMMAND} -DBINARY=$<TARGET_FILE:wavefront> -DOUT=${CMAKE_BINARY_DIR}/wavefront.1
+                             -P ${CMAKE_SOURCE_DIR}/cmake/man_page.cmake
+                     DEPENDS wavefront ${CMAKE_SOURCE_DIR}/cmake/man_page.cmake VERBATIM)
+  add_custom_target(wf_man_page ALL DEPENDS ${CMAKE_BINARY_DIR}/wavefront.1)
+  install(FILES ${CMAKE_BINARY_DIR}/wavefront.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+else()
+  message(STATUS "no man page (help2man not found)")
+endif()
+install(FILES scripts/wavefront-completion.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
+        RENAME wavefront)
