@@ -14,10 +14,18 @@
 #include <CLI/CLI.hpp>
 
 #include "base/errors.h"
+#include "image/image_io.h"
 #include "scene/camera.h"
 
 namespace wf {
 namespace {
+
+// A number as few digits write it ("1", "-1.5"), for messages.
+std::string shortest(float value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
 
 constexpr uint32_t kMaxSide = 1u << 15; // 32768: keeps every pixel index within 32 bits
 
@@ -122,6 +130,14 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("scene", o.scene, "The glTF scene (.gltf or .glb)")->required()->type_name("SCENE");
     render.add_option("-o,--output", o.output, with_default("Output image; the extension picks the format", o.output))
         ->type_name("OUT");
+    render.add_option("--exposure", o.exposure,
+                      with_default("Scale an 8-bit output (.png, .jpg) by 2^EV before the sRGB curve; a float "
+                                   "output keeps radiance", 0))
+        ->check(finite_number(false))
+        ->type_name("EV");
+    render.add_flag("--half", o.half,
+                    with_default("Store a float output's channels as 16-bit halves (a partial render stays "
+                                 "32-bit)", "off"));
     f.spp_flag = render.add_option("--spp", s.spp, with_default("Samples per pixel", s.spp))
                      ->check(whole_number(1, 1u << 24));
     render.add_option("--width", o.width, with_default("Image width", std::to_string(kDefaultImageWidth) +
@@ -313,6 +329,13 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
     s.hemisphere = index_of(kHemisphereNames, f.hemisphere);
     s.sampler = index_of(kSamplerNames, f.sampler);
     if (!f.aov.empty()) s.bounce_layers = 8;
+    if (std::abs(o.exposure) > 64.0f) // 2^64 already turns any radiance white or black
+        throw InputError("render: --exposure: " + shortest(o.exposure) + " is not in -64 to 64");
+    if (o.exposure != 0.0f && holds_float_radiance(o.output))
+        throw InputError("render: --exposure " + shortest(o.exposure) + ": " + o.output +
+                         " keeps linear radiance; exposure applies to 8-bit outputs such as .png");
+    if (o.half && !holds_float_radiance(o.output))
+        throw InputError("render: --half: " + o.output + " is not a float format such as .exr");
     if (s.integrator == Integrator::Megakernel && f.schedule_flag->count())
         throw InputError("render: --schedule orders the wavefront's stages; the megakernel has none");
     if (s.integrator == Integrator::Megakernel && s.sort_materials)

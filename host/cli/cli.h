@@ -32,6 +32,8 @@ struct RenderOptions {
     std::string stats_json;   // where to write the render's statistics (render_stats_json.h)
     double checkpoint_every = 0.0; // seconds between partial renders written to OUT.partial.exr; 0: none
     std::string resume;            // a partial render to go on from
+    float exposure = 0.0f;         // 8-bit outputs: scaled by 2^exposure before the sRGB curve
+    bool half = false;             // float outputs: 16-bit half channels
     bool quiet = false;            // errors only: no progress line, table, report, warning or note
     int ranks = 1;                 // MPI ranks sharing the render: set by cluster_render.cpp, not a flag
 };

@@ -276,7 +276,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         if (summary.interrupted_by && !computed)
             log << "interrupted before any sample finished: nothing written\n";
         else
-            write_image(options.output, film.mean, metadata, bounce_layers(film));
+            write_image(options.output, film.mean, metadata, bounce_layers(film),
+                        ImageEncoding{options.half, options.exposure});
         std::error_code ignored;
         if (summary.interrupted_by && computed) {
             write_partial();

@@ -67,15 +67,17 @@ Image read_image(const std::string& path) {
 }
 
 void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata,
-                 const std::vector<ImageLayer>& layers) {
+                 const std::vector<ImageLayer>& layers, const ImageEncoding& encoding) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw InputError(path + ": no image format for this extension (" + OIIO::geterror() + ")");
     const bool float_format = stores_linear_float(out->format_name());
     if (!layers.empty() && !float_format)
         throw InputError(path + ": image layers need a float format such as .exr");
     const int channels = 3 * static_cast<int>(1 + layers.size());
-    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels,
-                         float_format ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    const OIIO::TypeDesc stored = !float_format ? OIIO::TypeDesc::UINT8
+                                  : encoding.half ? OIIO::TypeDesc::HALF
+                                                  : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels, stored);
     spec.channelnames = {"R", "G", "B"};
     for (const ImageLayer& l : layers)
         for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.name + "." + c);
@@ -103,8 +105,10 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
             const Image& source = c < 3 ? image : layers[c / 3 - 1].image;
             pixels[p * channels + c] = source.rgb[3 * p + c % 3];
         }
-    if (!float_format)
-        for (float& v : pixels) v = srgb_encode(v);
+    if (!float_format) {
+        const float scale = std::exp2(encoding.exposure);
+        for (float& v : pixels) v = srgb_encode(v * scale);
+    }
     const std::filesystem::path temporary = temporary_beside(path);
     bool written = out->open(temporary.string(), spec);
     written = written && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());

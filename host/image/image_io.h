@@ -34,9 +34,16 @@ struct ImageLayer {
     Image image;
 };
 
+// How the values are stored: float formats as 32-bit floats or, with
+// `half`, 16-bit halves; 8-bit formats scaled by 2^exposure before the sRGB curve.
+struct ImageEncoding {
+    bool half = false;
+    float exposure = 0.0f;
+};
+
 // Throws InputError naming the file when it cannot be written.
 void write_image(const std::string& path, const Image& image, const ImageMetadata& metadata,
-                 const std::vector<ImageLayer>& layers = {});
+                 const std::vector<ImageLayer>& layers = {}, const ImageEncoding& encoding = {});
 
 // Throws InputError naming `path` unless a file can be written there: its
 // folder exists and takes a new file, and the extension names a format. Checked

@@ -155,6 +155,37 @@ TEST_F(Cli, BadScenesAreRejectedByName) {
     expect_rejected("render " + path("nan.gltf"), "spiky");
 }
 
+// --exposure brightens an 8-bit output by 2^EV before the sRGB curve and is
+// refused for a float output, which keeps radiance; --half stores an EXR's
+// channels as halves, the float render rounded to the nearest half.
+TEST_F(Cli, ExposureScalesEightBitOutputsAndHalfStoresHalves) {
+    const std::string base = "render " + kCornell + " --width 32 --spp 4 --seed 2 --quiet -o ";
+    ASSERT_EQ(run(base + path("plain.png")).exit_code, 0);
+    ASSERT_EQ(run(base + path("bright.png") + " --exposure 1").exit_code, 0);
+    ASSERT_EQ(run(base + path("dark.png") + " --exposure=-2").exit_code, 0);
+    ASSERT_EQ(run(base + path("float.exr")).exit_code, 0);
+    ASSERT_EQ(run(base + path("half.exr") + " --half").exit_code, 0);
+    const Image linear = read_image(path("float.exr")), plain = read_image(path("plain.png"));
+    const Image bright = read_image(path("bright.png")), dark = read_image(path("dark.png"));
+    // One 8-bit step of the sRGB curve, in linear terms, bounds the difference.
+    for (size_t i = 0; i < linear.rgb.size(); ++i) {
+        const float v = linear.rgb[i], step = 0.01f + 0.02f * v;
+        EXPECT_NEAR(plain.rgb[i], std::min(v, 1.0f), step) << i;
+        EXPECT_NEAR(bright.rgb[i], std::min(2.0f * v, 1.0f), 2.0f * step) << i;
+        EXPECT_NEAR(dark.rgb[i], std::min(0.25f * v, 1.0f), step) << i;
+    }
+    auto in = OIIO::ImageInput::open(path("half.exr"));
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
+    in->close();
+    const Image half = read_image(path("half.exr"));
+    for (size_t i = 0; i < linear.rgb.size(); ++i)
+        EXPECT_NEAR(half.rgb[i], linear.rgb[i], 1e-3f * linear.rgb[i] + 1e-7f) << i; // half: 11 significant bits
+    expect_rejected(base + path("e.exr") + " --exposure 1", "--exposure 1: " + path("e.exr") + " keeps linear radiance");
+    expect_rejected(base + path("h.png") + " --half", "--half: " + path("h.png") + " is not a float format");
+    expect_rejected(base + path("x.png") + " --exposure 100", "--exposure: 100 is not in -64 to 64");
+}
+
 TEST_F(Cli, RendersPngAndExrWithMetadata) {
     const test::ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
     ASSERT_EQ(png.exit_code, 0) << png.err;
