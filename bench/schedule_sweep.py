@@ -87,7 +87,8 @@ def main():
              f"`python3 bench/schedule_sweep.py --width {args.width} --spp {args.spp}`, on "
              f"{wavefront.devices()[0].name} (PoCL), the default device. M samples/s over the render's "
              "wall time, from `Result.stats`; kernels compiled by a 1-spp render first. "
-             "Plots: [rates](schedule-sweep-rates.png), [queue lengths](schedule-sweep-queues.png).", "",
+             "Plots: [rates](schedule-sweep-rates.png), [queue lengths](schedule-sweep-queues.png) (the group "
+             "schedule keeps its queues in each work-group's local memory: its global counters stay 0).", "",
              "| scene | schedule | local size | " + " | ".join(f"pool {p}" for p in POOLS) + " |",
              "|---|---|--:|" + "--:|" * len(POOLS)]
     for name, _ in SCENES:
