@@ -119,7 +119,8 @@ void add_cache_dir(CLI::App& command, std::string& directory) {
 
 // The render command's flags, each filling its field of `o`.
 struct RenderFlags {
-    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, aov, config;
+    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, config;
+    std::vector<std::string> aovs;
     CLI::Option *schedule_flag = nullptr, *spp_flag = nullptr;
 };
 
@@ -226,10 +227,13 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_flag_function("--no-specialize", [&s](int64_t) { s.specialize = false; },
                     with_default("Compile the generic kernels, every feature on, instead of those for the scene's "
                                  "features", "off"));
-    render.add_option("--aov", f.aov,
-                      with_default("Extra EXR layers: bounces, the radiance after 0, 1, ..., 6 and 7+ reflections",
+    render.add_option("--aov", f.aovs,
+                      with_default("Extra EXR layers, comma-separated: albedo, normal, depth (the first hit's base "
+                                   "colour, shading normal and distance, for a denoiser or compositor); bounces "
+                                   "(the radiance after 0, 1, ..., 6 and 7+ reflections)",
                                    "none"))
-        ->check(CLI::IsMember({"bounces"}));
+        ->delimiter(',')
+        ->check(CLI::IsMember({"albedo", "normal", "depth", "bounces"}));
 
     const std::string error = "Error against time";
     render.add_option("--reference", o.reference,
@@ -328,7 +332,11 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
     s.light_sampling = index_of(kLightSamplingNames, f.light_sampling);
     s.hemisphere = index_of(kHemisphereNames, f.hemisphere);
     s.sampler = index_of(kSamplerNames, f.sampler);
-    if (!f.aov.empty()) s.bounce_layers = 8;
+    for (const std::string& aov : f.aovs) {
+        if (aov == "bounces") s.bounce_layers = 8;
+        for (const auto& [name, bit] : kFirstHitAovs)
+            if (aov == name) s.aovs |= bit;
+    }
     if (std::abs(o.exposure) > 64.0f) // 2^64 already turns any radiance white or black
         throw InputError("render: --exposure: " + shortest(o.exposure) + " is not in -64 to 64");
     if (o.exposure != 0.0f && holds_float_radiance(o.output))
@@ -361,6 +369,14 @@ void declare_cache(CLI::App& cache, CommandLine& cl) {
 }
 
 } // namespace
+
+std::string aov_names(const RenderSettings& s) {
+    std::string names;
+    for (const auto& [name, bit] : kFirstHitAovs)
+        if (s.aovs & bit) names += (names.empty() ? "" : ",") + std::string(name);
+    if (s.bounce_layers) names += names.empty() ? "bounces" : ",bounces";
+    return names.empty() ? "none" : names;
+}
 
 CommandLine parse_command_line(int argc, const char** argv) {
     CommandLine cl;

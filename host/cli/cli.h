@@ -56,4 +56,7 @@ struct CommandLine {
 
 CommandLine parse_command_line(int argc, const char** argv);
 
+// --aov's value for these settings ("albedo,bounces"), or "none".
+std::string aov_names(const RenderSettings& settings);
+
 } // namespace wf

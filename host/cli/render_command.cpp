@@ -93,7 +93,7 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size) {
             {"env-rotate", std::to_string(o.environment_rotate)},
             {"env-scale", std::to_string(o.environment_scale)},
             {"env-uniform", std::to_string(o.environment_uniform)},
-            {"aov", s.bounce_layers ? "bounces" : "none"},
+            {"aov", aov_names(s)},
             {"version", WF_VERSION}};
 }
 
@@ -117,8 +117,12 @@ void check_outputs(const RenderOptions& o, bool image) {
     if (!o.stats_json.empty()) check_can_write_file(o.stats_json);
 }
 
-std::vector<ImageLayer> bounce_layers(const FilmReadout& film) {
+// The --aov layers the film holds, as the image file names them.
+std::vector<ImageLayer> aov_layers(const FilmReadout& film) {
     std::vector<ImageLayer> layers;
+    if (film.albedo) layers.push_back({"albedo", *film.albedo});
+    if (film.normal) layers.push_back({"normal", *film.normal, {"X", "Y", "Z"}});
+    if (film.depth) layers.push_back({"depth", *film.depth, {"Z"}});
     for (size_t i = 0; i < film.bounce_layers.size(); ++i) {
         const bool last = i + 1 == film.bounce_layers.size();
         layers.push_back({"bounce" + std::to_string(i) + (last ? "plus" : ""), film.bounce_layers[i]});
@@ -177,7 +181,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
-    if (options.settings.bounce_layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
+    const bool layers = options.settings.bounce_layers || options.settings.aovs;
+    if (layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
     // Checked before the long set-up.
     const ImageOptions shaping = image_options(options, size);
@@ -190,7 +195,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
             throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
                              " already holds " + std::to_string(held) + " spp; ask for more to go on");
     }
-    if (options.settings.bounce_layers && hooks.write_image && !holds_float_radiance(options.output))
+    if (layers && hooks.write_image && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
     std::optional<Image> reference;
     if (!options.reference.empty()) {
@@ -276,7 +281,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         if (summary.interrupted_by && !computed)
             log << "interrupted before any sample finished: nothing written\n";
         else
-            write_image(options.output, film.mean, metadata, bounce_layers(film),
+            write_image(options.output, film.mean, metadata, aov_layers(film),
                         ImageEncoding{options.half, options.exposure});
         std::error_code ignored;
         if (summary.interrupted_by && computed) {

@@ -7,9 +7,16 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "wavefront/path_state.h"
+
 // Planes of one element per pixel in a buffer of each extent (film_buffers.h).
-#define WF_FILM_PLANES_PIXEL(bounce_layers) 1u
-#define WF_FILM_PLANES_LAYER(bounce_layers) (bounce_layers)
+#define WF_FILM_PLANES_PIXEL(bounce_layers, aovs) 1u
+#define WF_FILM_PLANES_LAYER(bounce_layers, aovs) (bounce_layers)
+#define WF_FILM_PLANES_AOV(bounce_layers, aovs) ((aovs) ? 1u : 0u)
+// Whether a state may leave the buffer out (a partial render keeps neither layers nor AOVs).
+#define WF_FILM_OPTIONAL_PIXEL false
+#define WF_FILM_OPTIONAL_LAYER true
+#define WF_FILM_OPTIONAL_AOV true
 
 namespace wf {
 namespace {
@@ -26,8 +33,8 @@ void read_planes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t
 
 template <typename T>
 void write_planes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t pixels, uint32_t planes,
-                  uint32_t first, uint32_t count, const std::vector<T>& from) {
-    if (from.empty() && planes != 1) return; // layers a state does not keep
+                  uint32_t first, uint32_t count, const std::vector<T>& from, bool optional) {
+    if (from.empty() && optional) return; // layers or AOVs a state does not keep
     if (from.size() != pixels * planes) throw std::logic_error("a film state of another size");
     for (size_t plane = 0; plane < planes; ++plane) {
         const size_t at = plane * pixels + first;
@@ -62,7 +69,7 @@ std::vector<unsigned char> pack_pixels(const FilmState& st, uint32_t first, uint
     const size_t pixels = size_t{st.width} * st.height;
     std::vector<unsigned char> out;
 #define WF_FILM_PACK(type, name, extent, what) \
-    pack_planes(st.name, pixels, WF_FILM_PLANES_##extent(st.bounce_layers), first, count, out);
+    pack_planes(st.name, pixels, WF_FILM_PLANES_##extent(st.bounce_layers, st.aovs), first, count, out);
     WF_FILM_BUFFERS(WF_FILM_PACK)
 #undef WF_FILM_PACK
     return out;
@@ -72,31 +79,31 @@ size_t unpack_pixels(const unsigned char* bytes, size_t size, uint32_t first, ui
     const size_t pixels = size_t{st.width} * st.height;
     size_t read = 0;
 #define WF_FILM_UNPACK(type, name, extent, what)                                                             \
-    read += unpack_planes(bytes + read, size - read, pixels, WF_FILM_PLANES_##extent(st.bounce_layers), first, \
+    read += unpack_planes(bytes + read, size - read, pixels, WF_FILM_PLANES_##extent(st.bounce_layers, st.aovs), first, \
                           count, st.name);
     WF_FILM_BUFFERS(WF_FILM_UNPACK)
 #undef WF_FILM_UNPACK
     return read;
 }
 
-size_t Film::bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers) {
+size_t Film::bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers, uint32_t aovs) {
     const size_t pixels = size_t{width} * height;
     size_t bytes = 0;
 #define WF_FILM_BYTES(type, name, extent, what) \
-    bytes += std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers)) * sizeof(film_element::type);
+    bytes += std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers, aovs)) * sizeof(film_element::type);
     WF_FILM_BUFFERS(WF_FILM_BYTES)
 #undef WF_FILM_BYTES
     return bytes;
 }
 
 Film::Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width_, uint32_t height_,
-           uint32_t bounce_layers_)
-    : width(width_), height(height_), bounce_layers(bounce_layers_) {
+           uint32_t bounce_layers_, uint32_t aovs_)
+    : width(width_), height(height_), bounce_layers(bounce_layers_), aovs(aovs_) {
     const size_t pixels = size_t{width} * height;
 #define WF_FILM_ALLOCATE(type, name, extent, what)                                                           \
     {                                                                                                       \
         const size_t bytes =                                                                                \
-            std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers)) * sizeof(film_element::type); \
+            std::max<size_t>(1, pixels * WF_FILM_PLANES_##extent(bounce_layers, aovs)) * sizeof(film_element::type); \
         name = cl::Buffer(context, CL_MEM_READ_WRITE, bytes);                                               \
         queue.enqueueFillBuffer(name, cl_uchar{0}, 0, bytes);                                               \
     }
@@ -109,8 +116,9 @@ void Film::read_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t c
     st.width = width;
     st.height = height;
     st.bounce_layers = bounce_layers;
+    st.aovs = aovs;
 #define WF_FILM_READ(type, name, extent, what) \
-    read_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers), first, count, st.name);
+    read_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers, aovs), first, count, st.name);
     WF_FILM_BUFFERS(WF_FILM_READ)
 #undef WF_FILM_READ
     queue.finish();
@@ -120,7 +128,8 @@ void Film::write_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t 
     const size_t pixels = size_t{width} * height;
     if (st.width != width || st.height != height) throw std::logic_error("a film state of another size");
 #define WF_FILM_WRITE(type, name, extent, what) \
-    write_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers), first, count, st.name);
+    write_planes(queue, name, pixels, WF_FILM_PLANES_##extent(bounce_layers, aovs), first, count, st.name, \
+                 WF_FILM_OPTIONAL_##extent);
     WF_FILM_BUFFERS(WF_FILM_WRITE)
 #undef WF_FILM_WRITE
     queue.finish();
@@ -153,6 +162,17 @@ FilmReadout resolve(const FilmState& st) {
             const double sample_variance = std::max(0.0, (squares - count * mean * mean) / (count - 1.0));
             out.variance_of_mean.rgb[3 * p + k] = static_cast<float>(sample_variance / count);
         }
+    }
+    if (st.aovs && st.aov_albedo.size() == pixels) {
+        auto mean_of = [&](const std::vector<cl_float4>& sums, auto value) {
+            Image image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
+            for (size_t p = 0; p < pixels; ++p)
+                for (int k = 0; k < 3 && n[p]; ++k) image.rgb[3 * p + k] = value(sums[p], k) / float(n[p]);
+            return image;
+        };
+        if (st.aovs & WF_AOV_ALBEDO) out.albedo = mean_of(st.aov_albedo, [](cl_float4 v, int k) { return v.s[k]; });
+        if (st.aovs & WF_AOV_NORMAL) out.normal = mean_of(st.aov_normal_depth, [](cl_float4 v, int k) { return v.s[k]; });
+        if (st.aovs & WF_AOV_DEPTH) out.depth = mean_of(st.aov_normal_depth, [](cl_float4 v, int) { return v.s[3]; });
     }
     if (st.layers.size() != pixels * st.bounce_layers) return out; // not kept
     for (uint32_t l = 0; l < st.bounce_layers; ++l) {

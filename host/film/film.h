@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <CL/opencl.hpp>
@@ -22,10 +23,11 @@ using uint32_t = cl_uint;
 // The sums and counts exactly as the kernels hold them, one vector per film
 // buffer: what a render needs to go on where it stopped
 // (host/film/partial_render.h), and the image that a render over several
-// devices gathers. xyz of each float4 are used; the layers are empty when
-// none are kept, and a partial render does not keep them.
+// devices gathers. xyz of each float4 are used; the layers and AOVs are
+// empty when none are kept, and a partial render keeps neither.
 struct FilmState {
     uint32_t width = 0, height = 0, bounce_layers = 0;
+    uint32_t aovs = 0; // WF_AOV_* bits
 #define WF_FILM_STATE_MEMBER(type, name, extent, what) std::vector<film_element::type> name;
     WF_FILM_BUFFERS(WF_FILM_STATE_MEMBER)
 #undef WF_FILM_STATE_MEMBER
@@ -42,17 +44,20 @@ struct FilmReadout {
     Image mean;                      // linear radiance; black where a pixel has no sample yet
     Image variance_of_mean;          // s² / n per channel; 0 where n < 2
     std::vector<Image> bounce_layers; // radiance after 0, 1, ... reflections; the last open-ended
+    // The first hit's mean base colour, shading normal and distance (the
+    // distance in every channel), where the render keeps them (WF_AOV_*).
+    std::optional<Image> albedo, normal, depth;
     uint32_t min_samples = 0;        // the fewest samples any pixel has
 };
 
 // Mean and variance of the mean of every pixel, from its sums; the bounce
-// layers where the state holds them.
+// layers and AOVs where the state holds them.
 FilmReadout resolve(const FilmState& state);
 
 class Film {
 public:
     Film(const cl::Context& context, const cl::CommandQueue& queue, uint32_t width, uint32_t height,
-         uint32_t bounce_layers);
+         uint32_t bounce_layers, uint32_t aovs = 0);
 
     FilmReadout read(const cl::CommandQueue& queue) const { return resolve(state(queue)); }
     // Every buffer, the layers included.
@@ -67,12 +72,12 @@ public:
     void read_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, FilmState& state) const;
     void write_pixels(const cl::CommandQueue& queue, uint32_t first, uint32_t count, const FilmState& state) const;
 
-    static size_t bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers);
-    size_t bytes() const { return bytes_for(width, height, bounce_layers); }
+    static size_t bytes_for(uint32_t width, uint32_t height, uint32_t bounce_layers, uint32_t aovs = 0);
+    size_t bytes() const { return bytes_for(width, height, bounce_layers, aovs); }
 
-    uint32_t width, height, bounce_layers;
+    uint32_t width, height, bounce_layers, aovs;
     // One buffer per entry of include/wavefront/film_buffers.h, by its name
-    // (the layers hold one element when there are none).
+    // (the layers and AOVs hold one element when there are none).
 #define WF_FILM_MEMBER(type, name, extent, what) cl::Buffer name;
     WF_FILM_BUFFERS(WF_FILM_MEMBER)
 #undef WF_FILM_MEMBER

@@ -73,14 +73,15 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
     const bool float_format = stores_linear_float(out->format_name());
     if (!layers.empty() && !float_format)
         throw InputError(path + ": image layers need a float format such as .exr");
-    const int channels = 3 * static_cast<int>(1 + layers.size());
+    int channels = 3;
+    for (const ImageLayer& l : layers) channels += static_cast<int>(l.channels.size());
     const OIIO::TypeDesc stored = !float_format ? OIIO::TypeDesc::UINT8
                                   : encoding.half ? OIIO::TypeDesc::HALF
                                                   : OIIO::TypeDesc::FLOAT;
     OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), channels, stored);
     spec.channelnames = {"R", "G", "B"};
     for (const ImageLayer& l : layers)
-        for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.name + "." + c);
+        for (const std::string& c : l.channels) spec.channelnames.push_back(l.name + "." + c);
     spec.attribute("oiio:ColorSpace", float_format ? "Linear" : "sRGB");
     spec.attribute("Software", "wavefront " WF_VERSION);
     // Numbers as numbers where the format keeps them (EXR); 8-bit writers (PNG
@@ -97,14 +98,14 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
     number("wavefront:interrupted", metadata.interrupted ? 1 : 0);
     for (const auto& [name, value] : metadata.options) spec.attribute("wavefront:option:" + name, value);
 
-    // Interleaved: RGB, then each layer's RGB, pixel by pixel.
+    // Interleaved: RGB, then each layer's channels, pixel by pixel.
     const size_t count = size_t{image.width} * image.height;
     std::vector<float> pixels(count * channels);
-    for (size_t p = 0; p < count; ++p)
-        for (int c = 0; c < channels; ++c) {
-            const Image& source = c < 3 ? image : layers[c / 3 - 1].image;
-            pixels[p * channels + c] = source.rgb[3 * p + c % 3];
-        }
+    for (size_t p = 0; p < count; ++p) {
+        float* out_pixel = &pixels[p * channels];
+        out_pixel = std::copy_n(&image.rgb[3 * p], 3, out_pixel);
+        for (const ImageLayer& l : layers) out_pixel = std::copy_n(&l.image.rgb[3 * p], l.channels.size(), out_pixel);
+    }
     if (!float_format) {
         const float scale = std::exp2(encoding.exposure);
         for (float& v : pixels) v = srgb_encode(v * scale);

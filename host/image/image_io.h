@@ -27,11 +27,13 @@ struct ImageMetadata {
     ImageOptions options;
 };
 
-// An extra set of channels written beside RGB, as "<name>.R", "<name>.G",
-// "<name>.B"; only float formats can hold them.
+// An extra set of channels written beside RGB, as "<name>.<channel>" (R, G, B
+// unless named otherwise) from each pixel's first channels.size() values;
+// only float formats can hold them.
 struct ImageLayer {
     std::string name;
     Image image;
+    std::vector<std::string> channels{"R", "G", "B"};
 };
 
 // How the values are stored: float formats as 32-bit floats or, with

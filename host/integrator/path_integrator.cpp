@@ -86,7 +86,7 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
                                const RenderSettings& settings)
     : device_(device), settings_(settings), scene_(scene), camera_(camera),
       pool_(device.context, settings.pool_size),
-      film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers) {
+      film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers, settings.aovs) {
     params_.pixel_count = camera.width * camera.height;
     params_.first_pixel = 0;
     params_.traced_pixels = params_.pixel_count;
@@ -99,6 +99,7 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
     params_.hemisphere = settings.hemisphere;
     params_.sampler = settings.sampler;
     params_.bounce_layers = settings.bounce_layers;
+    params_.aovs = settings.aovs;
     params_.environment_light = scene.environment_light;
     params_.scene_diameter = scene.scene_diameter;
     params_.environment = scene.environment;

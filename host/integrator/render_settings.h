@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "wavefront/path_state.h"
 
@@ -37,6 +38,9 @@ constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
 constexpr ChoiceNames kSamplerNames = {"independent", "sobol", nullptr};
+// --aov's first-hit layers by name (the bounce layers are the fourth choice, "bounces").
+constexpr std::array<std::pair<const char*, uint32_t>, 3> kFirstHitAovs = {
+    {{"albedo", WF_AOV_ALBEDO}, {"normal", WF_AOV_NORMAL}, {"depth", WF_AOV_DEPTH}}};
 static_assert(WF_LIGHT_SAMPLING_BSDF == 0 && WF_LIGHT_SAMPLING_NEE == 1 && WF_LIGHT_SAMPLING_MIS == 2);
 static_assert(WF_HEMISPHERE_UNIFORM == 0 && WF_HEMISPHERE_COSINE == 1);
 static_assert(WF_SAMPLER_INDEPENDENT == 0 && WF_SAMPLER_SOBOL == 1);
@@ -67,6 +71,7 @@ struct RenderSettings {
     uint32_t hemisphere = WF_HEMISPHERE_COSINE;
     uint32_t sampler = WF_SAMPLER_INDEPENDENT;
     uint32_t bounce_layers = 0; // per-bounce film layers, 0 for none
+    uint32_t aovs = 0;          // WF_AOV_* bits: the first hit's layers (kernels/common/first_hit_aovs.h)
     bool specialize = true;     // compile the kernels for the scene's features (host/device/scene_features.h)
     std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
     Integrator integrator = Integrator::Wavefront;

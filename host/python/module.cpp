@@ -41,7 +41,7 @@ struct PyScene {
 // The render's result as Python sees it.
 struct PyResult {
     py::array_t<float> image, variance;
-    py::dict bounce_layers;
+    py::dict bounce_layers, aovs;
     RenderSummary summary;
     std::vector<Checkpoint> checkpoints;
 };
@@ -149,6 +149,13 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     }
     result.image = to_array(film.mean);
     result.variance = to_array(film.variance_of_mean);
+    if (film.albedo) result.aovs["albedo"] = to_array(*film.albedo);
+    if (film.normal) result.aovs["normal"] = to_array(*film.normal);
+    if (film.depth) { // one channel: the distance
+        py::array_t<float> depth({size_t{film.depth->height}, size_t{film.depth->width}});
+        for (size_t p = 0; p < size_t(depth.size()); ++p) depth.mutable_data()[p] = film.depth->rgb[3 * p];
+        result.aovs["depth"] = depth;
+    }
     for (size_t l = 0; l < film.bounce_layers.size(); ++l) {
         const bool last = l + 1 == film.bounce_layers.size();
         result.bounce_layers[py::str("bounce" + std::to_string(l) + (last ? "plus" : ""))] = to_array(film.bounce_layers[l]);
@@ -272,6 +279,9 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("image", &PyResult::image, "linear radiance, height x width x 3, float32")
         .def_readonly("variance", &PyResult::variance, "the variance of each pixel's mean")
         .def_readonly("bounce_layers", &PyResult::bounce_layers, "with aov='bounces': name -> image")
+        .def_readonly("aovs", &PyResult::aovs,
+                      "with aov=['albedo', 'normal', 'depth']: the first hit's mean base colour and shading normal "
+                      "(height x width x 3) and distance (height x width); 0 where the camera ray escapes")
         .def_readonly("checkpoints", &PyResult::checkpoints)
         .def_property_readonly("stats", [](const PyResult& r) { return r.summary.stats; })
         .def_property_readonly("spp", [](const PyResult& r) { return r.summary.spp; })

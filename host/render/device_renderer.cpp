@@ -47,6 +47,7 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
         settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
     const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
     std::string options = feature_defines(features);
+    if (settings.aovs) options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
         options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
     // The scan and the group schedule size their local arrays by the launch's local size.
@@ -77,7 +78,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     summary_.times.bvh_build = build.seconds;
 
     const size_t pixels = size_t{size.width} * size.height;
-    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers);
+    const size_t film_bytes = Film::bytes_for(size.width, size.height, settings.bounce_layers, settings.aovs);
     if (requested.pool_size == 0) {
         // The default pool, capped to half the memory the scene and the film
         // leave, and to the largest buffer the device allocates: a small

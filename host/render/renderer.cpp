@@ -109,7 +109,7 @@ uint32_t Renderer::resume(const FilmState& state) {
     if (by_units_ || !devices_[0]->resume(state)) {
         by_units_ = true;
         image_ = state;
-        image_.bounce_layers = 0; // a partial render keeps none
+        image_.bounce_layers = image_.aovs = 0; // a partial render keeps neither
         holder_.assign(pixels_, kNoWorker);
     }
     return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());

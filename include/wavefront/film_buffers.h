@@ -7,8 +7,9 @@
  * into (kernels/kernel_params.h), the host's buffers, the loop that binds
  * them (host/integrator/stage_args.cpp) and the host's copy of them
  * (FilmState, host/film/film.h).
- *   X(element type, name, PIXEL: one element per pixel, or LAYER: one per bounce
- *     layer and pixel, layer by layer; what an element holds) */
+ *   X(element type, name, PIXEL: one element per pixel, LAYER: one per bounce
+ *     layer and pixel, layer by layer, or AOV: one per pixel when the render
+ *     keeps any of albedo, normal, depth; what an element holds) */
 #ifndef WAVEFRONT_FILM_BUFFERS_H
 #define WAVEFRONT_FILM_BUFFERS_H
 
@@ -19,6 +20,8 @@
     X(float4, squares_compensation, PIXEL, "likewise for the squares")                                \
     X(uint32_t, samples, PIXEL, "samples added")                                                      \
     X(float4, layers, LAYER, "radiance after that many bounces (--aov bounces)")                      \
-    X(float4, layer_compensation, LAYER, "likewise compensated")
+    X(float4, layer_compensation, LAYER, "likewise compensated")                                      \
+    X(float4, aov_albedo, AOV, "the first hit's base colour, summed (--aov albedo)")                  \
+    X(float4, aov_normal_depth, AOV, "its shading normal (xyz) and distance (w), summed")
 
 #endif /* WAVEFRONT_FILM_BUFFERS_H */

@@ -31,7 +31,7 @@
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
     X(RenderParams, sampler) X(RenderParams, bounce_layers) X(RenderParams, environment_light)     \
-    X(RenderParams, scene_diameter) X(RenderParams, environment)                                  \
+    X(RenderParams, scene_diameter) X(RenderParams, aovs) X(RenderParams, environment)            \
     X(Environment, scale) X(Environment, flags) X(Environment, cos_rotation)                      \
     X(Environment, sin_rotation) X(Environment, width) X(Environment, height)                     \
     X(PunctualLight, position) X(PunctualLight, type) X(PunctualLight, direction)                 \

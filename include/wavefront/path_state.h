@@ -30,10 +30,17 @@ typedef struct RenderParams {
     uint32_t bounce_layers;  /* film layers by bounce count (0: none), the last one open-ended */
     uint32_t environment_light; /* its entry in the light table; WF_NO_LIGHT without one */
     float scene_diameter;    /* of the scene's bounds: a shadow ray toward infinity stops past them */
-    uint32_t pad[1];
+    uint32_t aovs;           /* WF_AOV_* bits: what the first hit adds to the film beside radiance */
     Environment environment; /* valid when environment_light != WF_NO_LIGHT */
 } RenderParams;
 
+
+/* The first hit's layers a denoiser or compositor reads (--aov): its
+ * material's base colour, its shading normal and its distance from the camera,
+ * summed over a pixel's samples like radiance; 0 where the camera ray escapes. */
+#define WF_AOV_ALBEDO 1u
+#define WF_AOV_NORMAL 2u
+#define WF_AOV_DEPTH 4u
 
 /* How emitters are found: by BRDF sampling alone, by next-event estimation
  * alone, or both weighted by the power heuristic. */

@@ -19,6 +19,7 @@
 #include "film.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
+#include "common/first_hit_aovs.h"
 #include "common/sample_values.h"
 #include "materials/surface_material.h"
 #include "lights/choose_light.h"
@@ -123,6 +124,11 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
     point.b1 = hit.y;
     point.b2 = hit.z;
     const SurfaceHit s = surface_at(t, &scene->normals[triangle], scene, &point, hit, direction);
+#if WF_HAS_AOVS
+    if (depth == 0u) /* camera rays are unit: t is the distance */
+        add_first_hit_aovs(film, pixel, surface_bsdf(m, scene, &point, params->hemisphere).base_color,
+                           s.shading_normal, hit.x);
+#endif
 
     /* Emission seen along the ray. */
     if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {

@@ -186,6 +186,24 @@ TEST_F(Cli, ExposureScalesEightBitOutputsAndHalfStoresHalves) {
     expect_rejected(base + path("x.png") + " --exposure 100", "--exposure: 100 is not in -64 to 64");
 }
 
+// --aov takes a list: the first hit's layers and the bounce layers, named in
+// the EXR as a compositor expects (albedo.R, normal.X, depth.Z, bounce0.R).
+TEST_F(Cli, AovsAreLayersOfTheExr) {
+    const std::string base = "render " + kCornell + " --width 24 --spp 2 --quiet ";
+    ASSERT_EQ(run(base + "--aov albedo,normal,depth,bounces -o " + path("aov.exr")).exit_code, 0);
+    const ChannelImage image = read_channels(path("aov.exr"));
+    for (const char* name : {"R", "albedo.R", "albedo.B", "normal.X", "normal.Z", "depth.Z", "bounce0.R",
+                             "bounce7plus.B"})
+        EXPECT_NE(std::find(image.channel_names.begin(), image.channel_names.end(), name), image.channel_names.end())
+            << name;
+    EXPECT_EQ(image.channel_names.size(), 3u + 3u + 3u + 1u + 8u * 3u);
+    const auto aov = std::find_if(image.options.begin(), image.options.end(), [](auto& o) { return o.first == "aov"; });
+    ASSERT_NE(aov, image.options.end());
+    EXPECT_EQ(aov->second, "albedo,normal,depth,bounces");
+    expect_rejected(base + "--aov albedo -o " + path("a.png"), "--aov layers need a float format");
+    expect_rejected(base + "--aov albedo,shadows -o " + path("a.exr"), "--aov");
+}
+
 TEST_F(Cli, RendersPngAndExrWithMetadata) {
     const test::ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
     ASSERT_EQ(png.exit_code, 0) << png.err;

@@ -78,6 +78,18 @@ def test_statistics_agree_with_one_another(cache):
     assert "samples " in result.report
 
 
+def test_first_hit_aovs_are_arrays(cache):
+    result = wavefront.render(CORNELL, cache_dir=cache, aov=["albedo", "normal", "depth"], **SMALL)
+    assert sorted(result.aovs) == ["albedo", "depth", "normal"]
+    assert result.aovs["albedo"].shape == (36, 48, 3) and result.aovs["depth"].shape == (36, 48)
+    depth = result.aovs["depth"]
+    assert (result.aovs["albedo"] <= 1.0).all() and np.median(depth) > 0.0
+    assert ((depth == 0.0) == (result.aovs["albedo"].sum(axis=2) == 0.0)).all()  # escaped: both 0
+    lengths = np.linalg.norm(result.aovs["normal"], axis=2)
+    assert (lengths <= 1.0 + 1e-5).all() and np.median(lengths) > 0.99
+    assert np.array_equal(result.image, wavefront.render(CORNELL, cache_dir=cache, **SMALL).image)
+
+
 def test_errors_carry_the_command_lines_message(cache):
     with pytest.raises(wavefront.InputError, match=r"^render: --spp: 0 is not in 1 to 16777216$"):
         wavefront.render(CORNELL, spp=0)

@@ -1,0 +1,23 @@
+/* first_hit_aovs.h — the layers a denoiser or compositor reads (--aov
+ * albedo,normal,depth): at a camera ray's end, the base colour of the
+ * material it hit, its shading normal (world space, facing the camera) and
+ * its distance, added to the pixel's sums like radiance, so a pixel holds
+ * their mean over its samples; an escaped ray adds nothing (zeros). Compiled only
+ * where a render keeps them (WF_HAS_AOVS); a pixel's owning slot is its only
+ * writer, so no atomics are needed. */
+#ifndef WF_FIRST_HIT_AOVS_H
+#define WF_FIRST_HIT_AOVS_H
+
+#include "wavefront/path_state.h"
+#include "film.h"
+
+#ifndef WF_HAS_AOVS
+#define WF_HAS_AOVS 0
+#endif
+
+inline void add_first_hit_aovs(const FilmBuffers* film, uint pixel, float3 albedo, float3 normal, float distance) {
+    film->aov_albedo[pixel] += (float4)(albedo, 0.0f);
+    film->aov_normal_depth[pixel] += (float4)(normal, distance);
+}
+
+#endif
