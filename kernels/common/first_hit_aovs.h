@@ -2,9 +2,10 @@
  * albedo,normal,depth): at a camera ray's end, the base colour of the
  * material it hit, its shading normal (world space, facing the camera) and
  * its distance, added to the pixel's sums like radiance, so a pixel holds
- * their mean over its samples; an escaped ray adds nothing (zeros). Compiled only
- * where a render keeps them (WF_HAS_AOVS); a pixel's owning slot is its only
- * writer, so no atomics are needed. */
+ * their mean over its samples; an escaped ray adds nothing (zeros). A render
+ * option, not a scene feature: compiled only where a render keeps them
+ * (-DWF_HAS_AOVS=1); a pixel's owning slot is its only writer, so no atomics
+ * are needed. */
 #ifndef WF_FIRST_HIT_AOVS_H
 #define WF_FIRST_HIT_AOVS_H
 
