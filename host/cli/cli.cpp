@@ -20,8 +20,8 @@
 namespace wf {
 namespace {
 
-// A number as few digits write it ("1", "-1.5"), for messages.
-std::string shortest(float value) {
+// A value as a stream writes it: a number in as few digits as it needs ("1", "-1.5").
+template <class T> std::string as_text(const T& value) {
     std::ostringstream text;
     text << value;
     return text.str();
@@ -76,9 +76,7 @@ std::string with_default(const std::string& help, const std::string& value) {
     return help + " (default: " + value + ")";
 }
 template <class T> std::string with_default(const std::string& help, const T& value) {
-    std::ostringstream text;
-    text << value;
-    return with_default(help, text.str());
+    return with_default(help, as_text(value));
 }
 
 // The command's name and the flag, before CLI11's own words.
@@ -338,9 +336,9 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
             if (aov == name) s.aovs |= bit;
     }
     if (std::abs(o.exposure) > 64.0f) // 2^64 already turns any radiance white or black
-        throw InputError("render: --exposure: " + shortest(o.exposure) + " is not in -64 to 64");
+        throw InputError("render: --exposure: " + as_text(o.exposure) + " is not in -64 to 64");
     if (o.exposure != 0.0f && holds_float_radiance(o.output))
-        throw InputError("render: --exposure " + shortest(o.exposure) + ": " + o.output +
+        throw InputError("render: --exposure " + as_text(o.exposure) + ": " + o.output +
                          " keeps linear radiance; exposure applies to 8-bit outputs such as .png");
     if (o.half && !holds_float_radiance(o.output))
         throw InputError("render: --half: " + o.output + " is not a float format such as .exr");

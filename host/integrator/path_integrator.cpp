@@ -54,6 +54,15 @@ void RenderStats::add(const RenderStats& o, bool with_counter_reads) {
     if (with_counter_reads) counter_reads.insert(counter_reads.end(), o.counter_reads.begin(), o.counter_reads.end());
 }
 
+RenderStats RenderStats::without_counter_reads() const {
+    RenderStats copy;
+    copy.integrator = integrator;
+    copy.schedule = schedule;
+    copy.seconds = seconds;
+    copy.add(*this, false);
+    return copy;
+}
+
 Stage RenderStats::whole_path_stage() const {
     if (integrator == Integrator::Megakernel) return STAGE_MEGAKERNEL;
     return schedule == Schedule::Group ? STAGE_GROUP : STAGE_COUNT;

@@ -56,6 +56,16 @@ struct CounterSnapshot {
     std::array<uint32_t, WF_QUEUE_COUNT> queues{};
     uint32_t closest_rays = 0, shadow_rays = 0, samples = 0;
     uint32_t pool_size = 0; // of the pool read
+
+    // As a row of the statistics' table (the stats JSON, the Python module),
+    // in the order kColumns names: the queue lengths as read, then the work
+    // done since the previous read.
+    static constexpr std::array<const char*, 8> kColumns = {
+        "regenerate", "extend", "shadow", "continue", "finished", "closest_rays", "shadow_rays", "samples"};
+    std::array<uint32_t, kColumns.size()> row() const {
+        return {queues[WF_QUEUE_REGENERATE], queues[WF_QUEUE_EXTEND], queues[WF_QUEUE_SHADOW],
+                queues[WF_QUEUE_CONTINUE],   queues[WF_QUEUE_FINISHED], closest_rays, shadow_rays, samples};
+    }
 };
 
 struct RenderStats {
@@ -79,6 +89,9 @@ struct RenderStats {
     // Adds another device's counts and kernel times (a render over several
     // devices), and its counter reads if asked; leaves the time.
     void add(const RenderStats& other, bool with_counter_reads);
+    // A copy without the counter reads, which grow all render long: what a
+    // progress report or another rank needs.
+    RenderStats without_counter_reads() const;
     // The stage whose one kernel takes paths from the camera to the film (the
     // megakernel, --schedule group), or STAGE_COUNT where each stage is a kernel.
     Stage whole_path_stage() const;

@@ -127,10 +127,7 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
             py::gil_scoped_acquire gil;
             if (raised) return;
             try {
-                RenderStats counts; // without the counter reads, which grow all render long
-                counts.add(s, false);
-                counts.seconds = s.seconds;
-                (*progress)(counts);
+                (*progress)(s.without_counter_reads());
             } catch (py::error_already_set& e) {
                 raised = std::move(e);
                 g_stop.store(SIGINT);
@@ -163,17 +160,13 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     return result;
 }
 
-// The counter reads as rows of regenerate, extend, shadow, continue,
-// finished, closest rays, shadow rays, samples (the stats JSON's columns).
+// The counter reads as rows of CounterSnapshot::row(), as the stats JSON has them.
 py::array_t<uint32_t> counter_reads(const RenderStats& s) {
-    py::array_t<uint32_t> a({s.counter_reads.size(), size_t{8}});
-    auto rows = a.mutable_unchecked<2>();
+    const size_t columns = CounterSnapshot::kColumns.size();
+    py::array_t<uint32_t> a({s.counter_reads.size(), columns});
     for (size_t i = 0; i < s.counter_reads.size(); ++i) {
-        const CounterSnapshot& c = s.counter_reads[i];
-        const uint32_t row[8] = {c.queues[WF_QUEUE_REGENERATE], c.queues[WF_QUEUE_EXTEND], c.queues[WF_QUEUE_SHADOW],
-                                 c.queues[WF_QUEUE_CONTINUE],   c.queues[WF_QUEUE_FINISHED], c.closest_rays,
-                                 c.shadow_rays,                 c.samples};
-        for (int k = 0; k < 8; ++k) rows(i, k) = row[k];
+        const auto row = s.counter_reads[i].row();
+        std::copy(row.begin(), row.end(), a.mutable_data() + i * columns);
     }
     return a;
 }
@@ -258,8 +251,7 @@ PYBIND11_MODULE(wavefront, m) {
                                "one row per read of the counters: " "regenerate, extend, shadow, continue, finished "
                                "as read, then closest rays, shadow rays and samples since the previous read")
         .def_property_readonly_static("counter_read_columns", [](py::object) {
-            return std::vector<std::string>{"regenerate", "extend", "shadow", "continue", "finished",
-                                            "closest_rays", "shadow_rays", "samples"};
+            return std::vector<std::string>(CounterSnapshot::kColumns.begin(), CounterSnapshot::kColumns.end());
         });
 
     py::class_<DeviceShare>(m, "DeviceShare", "One device's part in a render over several")

@@ -162,13 +162,6 @@ void DeviceRenderer::render_unit(uint32_t first, uint32_t count, uint32_t spp, F
     timed();
 }
 
-RenderStats DeviceRenderer::counts() const {
-    RenderStats c;
-    c.add(stats(), false);
-    c.seconds = stats().seconds;
-    return c;
-}
-
 RenderSummary DeviceRenderer::summary() const {
     RenderSummary s = summary_;
     s.stats = stats();

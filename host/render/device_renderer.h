@@ -50,7 +50,7 @@ public:
     void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) override;
     std::string name() const override { return device_.info.name; }
     uint32_t most_pixels() const override { return stats().pool_size; }
-    RenderStats counts() const override;
+    RenderStats counts() const override { return stats().without_counter_reads(); }
     double transfer_seconds() const override { return transfer_seconds_; }
 
     void on_progress(std::function<void(const RenderStats&)> f) { integrator_->on_progress(std::move(f)); }

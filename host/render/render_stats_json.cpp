@@ -56,15 +56,10 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
         if (t.launches) stages[t.name] = {{"launches", t.launches}, {"seconds", t.seconds}};
     j["stages"] = stages;
     j["path_lengths"] = st.path_lengths;
-    // One row per read: regenerate, extend, shadow, continue, finished as read, then
-    // the closest rays, shadow rays and samples since the previous read.
+    // One row per read (CounterSnapshot::row()).
     nlohmann::json reads = nlohmann::json::array();
-    for (const CounterSnapshot& c : st.counter_reads)
-        reads.push_back({c.queues[WF_QUEUE_REGENERATE], c.queues[WF_QUEUE_EXTEND], c.queues[WF_QUEUE_SHADOW],
-                         c.queues[WF_QUEUE_CONTINUE], c.queues[WF_QUEUE_FINISHED], c.closest_rays, c.shadow_rays,
-                         c.samples});
-    j["counter_read_columns"] = {"regenerate", "extend", "shadow", "continue", "finished",
-                                 "closest_rays", "shadow_rays", "samples"};
+    for (const CounterSnapshot& c : st.counter_reads) reads.push_back(c.row());
+    j["counter_read_columns"] = CounterSnapshot::kColumns;
     j["counter_reads"] = reads;
     write_file_atomically(path, j.dump(1) + "\n");
 }

@@ -26,7 +26,7 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
 
 Renderer::Renderer(const std::vector<const OpenClDevice*>& devices, const Scene& scene, const SceneCamera& camera,
                    ImageSize size, const RenderSettings& settings)
-    : pixels_(size.width * size.height), stop_(settings.stop) {
+    : size_(size), stop_(settings.stop) {
     const SceneBuild build(scene);
     for (const OpenClDevice* device : devices)
         devices_.push_back(std::make_unique<DeviceRenderer>(*device, scene, build, camera, size, settings));
@@ -44,7 +44,7 @@ void Renderer::add_workers(std::vector<std::unique_ptr<UnitWorker>> workers) {
     if (workers_.size() > 1 && !by_units_) {
         by_units_ = true;
         image_ = devices_[0]->film_state(); // zeroes, as every worker's film is
-        holder_.assign(pixels_, kEveryWorker);
+        holder_.assign(pixels(), kEveryWorker);
     }
 }
 
@@ -59,7 +59,7 @@ void Renderer::render_to(uint32_t spp) {
 }
 
 void Renderer::render_units(uint32_t spp) {
-    WorkUnits units(pixels_, static_cast<uint32_t>(workers_.size()));
+    WorkUnits units(pixels(), static_cast<uint32_t>(workers_.size()));
     std::atomic<bool> failed{false};
     std::vector<std::exception_ptr> errors(workers_.size());
     auto work = [&](size_t w) {
@@ -99,10 +99,9 @@ void Renderer::render_units(uint32_t spp) {
 }
 
 uint32_t Renderer::resume(const FilmState& state) {
-    const uint32_t width = devices_[0]->summary().width, height = devices_[0]->summary().height;
-    if (state.width != width || state.height != height)
+    if (state.width != size_.width || state.height != size_.height)
         throw InputError("the partial render is " + std::to_string(state.width) + "x" + std::to_string(state.height) +
-                         ", not " + std::to_string(width) + "x" + std::to_string(height));
+                         ", not " + std::to_string(size_.width) + "x" + std::to_string(size_.height));
     // One device goes on in place from counts its own pool left; any other
     // counts, and several workers, go on by units, which take each pixel from
     // wherever it stopped.
@@ -110,7 +109,7 @@ uint32_t Renderer::resume(const FilmState& state) {
         by_units_ = true;
         image_ = state;
         image_.bounce_layers = image_.aovs = 0; // a partial render keeps neither
-        holder_.assign(pixels_, kNoWorker);
+        holder_.assign(pixels(), kNoWorker);
     }
     return state.samples.empty() ? 0 : *std::min_element(state.samples.begin(), state.samples.end());
 }
@@ -130,8 +129,7 @@ void Renderer::on_progress(std::function<void(const RenderStats&)> f) {
     // Each local device reports from its own thread, with its own counts.
     for (size_t d = 0; d < devices_.size(); ++d)
         devices_[d]->on_progress([this, d](const RenderStats& s) {
-            RenderStats counts;
-            counts.add(s, false);
+            const RenderStats counts = s.without_counter_reads();
             std::lock_guard<std::mutex> lock(progress_mutex_);
             report_progress(d, counts);
         });
@@ -155,7 +153,7 @@ RenderSummary Renderer::summary() const {
     RenderSummary s = devices_[0]->summary();
     if (workers_.size() == 1) return s;
     s.stats = stats();
-    s.spp = static_cast<uint32_t>(s.stats.samples / pixels_);
+    s.spp = static_cast<uint32_t>(s.stats.samples / pixels());
     s.device = std::to_string(workers_.size()) + " devices";
     s.shares = shares_;
     for (size_t d = 1; d < devices_.size(); ++d) {

@@ -57,7 +57,8 @@ private:
     std::vector<std::unique_ptr<DeviceRenderer>> devices_; // this process's
     std::vector<std::unique_ptr<UnitWorker>> remote_;      // other ranks' devices
     std::vector<UnitWorker*> workers_;                     // devices_, then remote_
-    uint32_t pixels_ = 0;
+    ImageSize size_;
+    uint32_t pixels() const { return size_.width * size_.height; }
     // By units of work: the image as the workers last left it, and per pixel
     // the worker whose film holds the same sums (kEveryWorker, kNoWorker).
     bool by_units_ = false;
