@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "support/scratch_folder.h"
 #include "support/test_support.h"
 
 namespace wf {
@@ -22,15 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Cli : public ::testing::Test {
+class Cli : public test::ScratchFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("wavefront_cli_" + std::to_string(::getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     test::ProcessResult run(const std::string& args) const { return test::run_wavefront(args, dir_.string()); }
 
     // A bad invocation: exit code 2 and exactly one line on stderr containing `names`.
@@ -41,11 +35,7 @@ protected:
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": '" << r.err << "'";
     }
 
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
     void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
-
-    fs::path dir_;
 };
 
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";

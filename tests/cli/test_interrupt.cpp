@@ -19,6 +19,7 @@
 
 #include "image/image_io.h"
 #include "film/partial_render.h"
+#include "support/scratch_folder.h"
 #include "support/test_support.h"
 
 namespace wf {
@@ -27,16 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 
-class Interrupt : public ::testing::Test {
+class Interrupt : public test::ScratchFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("wavefront-interrupt-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
     // Starts `wavefront render` with `args` (one word each), its output in the test's folder.
     pid_t start(const std::vector<std::string>& args) const {
@@ -71,8 +64,6 @@ protected:
     }
 
     void interrupt_and_resume(const std::vector<std::string>& extra);
-
-    fs::path dir_;
 };
 
 bool same_pixels(const Image& a, const Image& b) {

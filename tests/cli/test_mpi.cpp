@@ -18,6 +18,7 @@
 
 #include "film/partial_render.h"
 #include "image/image_io.h"
+#include "support/scratch_folder.h"
 #include "support/test_support.h"
 
 namespace wf {
@@ -31,18 +32,14 @@ const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 const std::string kMpiEnv = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 POCL_MAX_PTHREAD_COUNT=1 "
                             "OMPI_MCA_odls_base_sigkill_timeout=3 OMPI_MCA_btl_vader_single_copy_mechanism=none";
 
-class Mpi : public ::testing::Test {
+class Mpi : public test::ScratchFolder {
 protected:
     void SetUp() override {
 #ifndef WF_HAVE_MPI
         GTEST_SKIP() << "built without MPI";
 #endif
-        dir_ = fs::temp_directory_path() / ("wavefront-mpi-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
+        ScratchFolder::SetUp();
     }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
     std::string render_args(const std::string& output, uint32_t spp) const {
         return "render " + kCornell + " --width 64 --seed 8 --spp " + std::to_string(spp) + " --cache-dir " +
@@ -82,7 +79,6 @@ protected:
             if (fs::exists(file)) return true;
         return false;
     }
-    fs::path dir_;
 };
 
 bool same_pixels(const Image& a, const Image& b) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
+#include "support/scratch_folder.h"
 #include "support/test_support.h"
 
 namespace wf {
@@ -19,21 +20,13 @@ namespace fs = std::filesystem;
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 const std::string kTwoDevices = "POCL_DEVICES='pthread pthread' POCL_MAX_PTHREAD_COUNT=1";
 
-class MultiDeviceCli : public ::testing::Test {
+class MultiDeviceCli : public test::ScratchFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("wavefront-multi-device-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
     test::ProcessResult render(const std::string& device, const std::string& output) const {
         return test::run_wavefront("render " + kCornell + " --width 64 --spp 6 --seed 4 --pool-size 700 --device " +
                                        device + " --cache-dir " + path("cache") + " -o " + output,
                                    dir_.string(), kTwoDevices);
     }
-    fs::path dir_;
 };
 
 bool same_pixels(const Image& a, const Image& b) {
