@@ -123,10 +123,8 @@ std::vector<ImageLayer> aov_layers(const FilmReadout& film) {
     if (film.albedo) layers.push_back({"albedo", *film.albedo});
     if (film.normal) layers.push_back({"normal", *film.normal, {"X", "Y", "Z"}});
     if (film.depth) layers.push_back({"depth", *film.depth, {"Z"}});
-    for (size_t i = 0; i < film.bounce_layers.size(); ++i) {
-        const bool last = i + 1 == film.bounce_layers.size();
-        layers.push_back({"bounce" + std::to_string(i) + (last ? "plus" : ""), film.bounce_layers[i]});
-    }
+    for (size_t i = 0; i < film.bounce_layers.size(); ++i)
+        layers.push_back({bounce_layer_name(i, film.bounce_layers.size()), film.bounce_layers[i]});
     return layers;
 }
 

@@ -43,12 +43,6 @@ std::vector<std::unique_ptr<UnitWorker>> OtherRanks::join(const std::string& sce
     return workers;
 }
 
-int OtherRanks::devices() const {
-    int n = 0;
-    for (const RankSetup& s : setups_) n += static_cast<int>(s.devices.size());
-    return n;
-}
-
 OtherRanks::~OtherRanks() {
     try {
         receive_setups();

@@ -29,7 +29,6 @@ public:
     std::vector<std::unique_ptr<UnitWorker>> join(const std::string& scene_contents, ImageSize size,
                                                   const std::atomic<int>* stop);
 
-    int devices() const; // of the other ranks, once joined
 
 private:
     void receive_setups();

@@ -32,7 +32,7 @@ void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t spp, Fil
     // it: the unit's pixels keep their sums from before it.
     std::optional<std::chrono::steady_clock::time_point> stop_seen;
     const std::optional<std::vector<unsigned char>> received = receive_bytes_unless(rank_, index_, what, [&] {
-        if (!(stop_ && stop_->load() != 0)) return false;
+        if (!stop_requested(stop_)) return false;
         if (!stop_seen) stop_seen = std::chrono::steady_clock::now();
         return std::chrono::steady_clock::now() - *stop_seen > std::chrono::milliseconds(kStoppedWaitMs);
     });
@@ -56,10 +56,9 @@ void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t spp, Fil
     // later; alone, it is a failure of that rank.
     const bool short_unit = std::any_of(image.samples.begin() + first, image.samples.begin() + first + count,
                                         [&](uint32_t n) { return n < spp; });
-    const auto stopped = [&] { return stop_ && stop_->load() != 0; };
-    for (int wait = 0; short_unit && !stopped() && wait < 500; ++wait)
+    for (int wait = 0; short_unit && !stop_requested(stop_) && wait < 500; ++wait)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    if (short_unit && !stopped())
+    if (short_unit && !stop_requested(stop_))
         throw std::runtime_error(name() + " stopped before its unit was done, and this rank was not (was it signalled alone?)");
     counts_ = from_wire(wire);
     remote_transfer_seconds_ = wire.transfer_seconds;

@@ -143,6 +143,10 @@ FilmState Film::state(const cl::CommandQueue& queue) const {
 
 void Film::restore(const cl::CommandQueue& queue, const FilmState& st) const { write_pixels(queue, 0, width * height, st); }
 
+std::string bounce_layer_name(size_t index, size_t count) {
+    return "bounce" + std::to_string(index) + (index + 1 == count ? "plus" : "");
+}
+
 FilmReadout resolve(const FilmState& st) {
     const size_t pixels = size_t{st.width} * st.height;
     const std::vector<cl_float4>&s = st.sum, &c = st.compensation, &s2 = st.sum_squares, &c2 = st.squares_compensation;

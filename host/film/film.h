@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <CL/opencl.hpp>
@@ -49,6 +50,10 @@ struct FilmReadout {
     std::optional<Image> albedo, normal, depth;
     uint32_t min_samples = 0;        // the fewest samples any pixel has
 };
+
+// What bounce layer `index` of `count` is called in files and in Python:
+// bounce0, bounce1, ..., the last open-ended one bounce7plus.
+std::string bounce_layer_name(size_t index, size_t count);
 
 // Mean and variance of the mean of every pixel, from its sums; the bounce
 // layers and AOVs where the state holds them.

@@ -161,7 +161,7 @@ protected:
     // left through its whole path (the megakernel, --schedule group), until
     // every pixel has params_.spp samples or the render is stopped.
     void run_whole_paths(Stage stage, const cl::Kernel& kernel);
-    bool stopping() const { return settings_.stop && settings_.stop->load() != 0; }
+    bool stopping() const { return stop_requested(settings_.stop); }
 
     const OpenClDevice& device_;
     RenderSettings settings_;

@@ -83,4 +83,7 @@ struct RenderSettings {
     const std::atomic<int>* stop = nullptr;
 };
 
+// Whether a stop flag (RenderSettings::stop) is there and set.
+inline bool stop_requested(const std::atomic<int>* stop) { return stop && stop->load() != 0; }
+
 } // namespace wf

@@ -153,10 +153,8 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
         for (size_t p = 0; p < size_t(depth.size()); ++p) depth.mutable_data()[p] = film.depth->rgb[3 * p];
         result.aovs["depth"] = depth;
     }
-    for (size_t l = 0; l < film.bounce_layers.size(); ++l) {
-        const bool last = l + 1 == film.bounce_layers.size();
-        result.bounce_layers[py::str("bounce" + std::to_string(l) + (last ? "plus" : ""))] = to_array(film.bounce_layers[l]);
-    }
+    for (size_t l = 0; l < film.bounce_layers.size(); ++l)
+        result.bounce_layers[py::str(bounce_layer_name(l, film.bounce_layers.size()))] = to_array(film.bounce_layers[l]);
     return result;
 }
 

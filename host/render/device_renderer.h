@@ -57,7 +57,6 @@ public:
     FilmReadout read() const { return integrator_->film().read(device_.queue); }
     FilmState film_state() const { return integrator_->film().state(device_.queue); }
     const RenderStats& stats() const { return integrator_->stats(); }
-    const OpenClDevice& device() const { return device_; }
 
     // What the closing report says of this device's render so far.
     RenderSummary summary() const;

@@ -44,7 +44,7 @@ FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& opti
         if (next <= done) break;
         renderer.render_to(next);
         film = renderer.read();
-        const bool stopped = options.stop && options.stop->load() != 0;
+        const bool stopped = stop_requested(options.stop);
         done = stopped ? film.min_samples : next;
 
         Checkpoint c;

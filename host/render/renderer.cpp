@@ -80,7 +80,7 @@ void Renderer::render_units(uint32_t spp) {
                 shares_[w].busy_seconds += since(start);
                 shares_[w].transfer_seconds = worker.transfer_seconds();
                 if (!local) report_progress(w, counts);
-                if (stop_ && stop_->load() != 0) return; // its integrator stopped too, within the unit
+                if (stop_requested(stop_)) return; // its integrator stopped too, within the unit
             }
         } catch (...) {
             errors[w] = std::current_exception();
