@@ -12,10 +12,6 @@ install(TARGETS wavefront_core EXPORT wavefrontTargets ARCHIVE DESTINATION ${CMA
 install(DIRECTORY host/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/wavefront/host FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY include/wavefront/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/wavefront FILES_MATCHING PATTERN "*.h")
 install(EXPORT wavefrontTargets NAMESPACE wavefront:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/wavefront)
-set(WF_WITH_MPI OFF)
-if(TARGET MPI::MPI_CXX AND WF_MPI)
-  set(WF_WITH_MPI ON)
-endif()
 configure_package_config_file(cmake/wavefrontConfig.cmake.in ${CMAKE_BINARY_DIR}/wavefrontConfig.cmake
                               INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/wavefront)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/wavefrontConfigVersion.cmake COMPATIBILITY SameMinorVersion)
