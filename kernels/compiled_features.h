@@ -25,5 +25,12 @@
 #ifndef WF_HAS_ENVIRONMENT
 #define WF_HAS_ENVIRONMENT 1
 #endif
+/* The BSDF kinds (wavefront/bsdf_kinds.h): WF_HAS_BSDF_<KIND>. */
+#ifndef WF_HAS_BSDF_GENERAL
+#define WF_HAS_BSDF_GENERAL 1
+#endif
+#ifndef WF_HAS_BSDF_OPAQUE
+#define WF_HAS_BSDF_OPAQUE 1
+#endif
 
 #endif

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "base/alias_table.h"
+#include "device/bsdf_kinds.h"
 #include "device/device_buffer.h"
 #include "scene/environment_map.h"
 
@@ -132,6 +133,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         dm.clearcoat_roughness = m.clearcoat_roughness;
         store3(dm.sheen_color, m.sheen_color);
         dm.sheen_roughness = m.sheen_roughness;
+        dm.bsdf_kind = bsdf_kind_of(m);
         store3(dm.emission, m.emission);
         dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);

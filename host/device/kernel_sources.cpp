@@ -17,8 +17,13 @@ const char* find_embedded(const std::string& path) {
     throw DeviceError("kernel source '" + path + "' is not embedded in this build");
 }
 
+// A header is expanded once, as its include guard would have it; a .inc file
+// (code written once for any lane width, kernels/lanes/lanes.h) at every
+// #include, once per width.
+bool expanded_once(const std::string& path) { return path.size() < 4 || path.compare(path.size() - 4, 4, ".inc") != 0; }
+
 void expand_into(const std::string& path, std::set<std::string>& seen, std::ostringstream& out) {
-    if (!seen.insert(path).second) return;
+    if (expanded_once(path) && !seen.insert(path).second) return;
     std::istringstream in(find_embedded(path));
     std::string line;
     int line_number = 0;

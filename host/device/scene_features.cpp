@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "device/bsdf_kinds.h"
 #include "scene/environment_map.h"
 
 namespace wf {
@@ -11,13 +12,16 @@ namespace {
 
 // Each feature with its define's name and its name in the report.
 std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const SceneFeatures& f) {
-    return {{f.textures, {"WF_HAS_TEXTURES", "textures"}},
+#define WF_BSDF_KIND_FEATURE(kind, name, what) {f.bsdf_kinds[WF_BSDF_##kind], {"WF_HAS_BSDF_" #kind, name " BSDF"}},
+    return {WF_BSDF_KINDS(WF_BSDF_KIND_FEATURE) // the kinds first: every scene has one
+            {f.textures, {"WF_HAS_TEXTURES", "textures"}},
             {f.normal_maps, {"WF_HAS_NORMAL_MAPS", "normal maps"}},
             {f.alpha_mask, {"WF_HAS_ALPHA_MASK", "alpha mask"}},
             {f.vertex_colors, {"WF_HAS_VERTEX_COLORS", "vertex colours"}},
             {f.emissive_triangles, {"WF_HAS_EMISSIVE_TRIANGLES", "emissive triangles"}},
             {f.punctual_lights, {"WF_HAS_PUNCTUAL_LIGHTS", "punctual lights"}},
             {f.environment, {"WF_HAS_ENVIRONMENT", "environment"}}};
+#undef WF_BSDF_KIND_FEATURE
 }
 
 } // namespace
@@ -25,7 +29,9 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
 SceneFeatures scene_features(const Scene& scene) {
     SceneFeatures f;
     f.textures = f.normal_maps = f.alpha_mask = false;
+    f.bsdf_kinds.fill(false);
     for (const SceneMaterial& m : scene.materials) {
+        f.bsdf_kinds[bsdf_kind_of(m)] = true;
         for (const TextureRef& ref : m.textures) f.textures = f.textures || ref.texture >= 0;
         f.normal_maps = f.normal_maps || m.textures[WF_TEXTURE_NORMAL].texture >= 0;
         f.alpha_mask = f.alpha_mask || m.alpha_mode == WF_ALPHA_MASK;

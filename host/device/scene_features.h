@@ -7,9 +7,11 @@
 // Kept coarse on purpose: a handful of switches, not a define per parameter.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "scene/scene.h"
+#include "wavefront/bsdf_kinds.h"
 
 namespace wf {
 
@@ -21,14 +23,24 @@ struct SceneFeatures {
     bool emissive_triangles = true; // any triangle emits
     bool punctual_lights = true;    // KHR_lights_punctual
     bool environment = true;        // an environment light
+    // Which BSDF kinds its materials have (host/device/bsdf_kinds.h), by WF_BSDF_*.
+    std::array<bool, WF_BSDF_KIND_COUNT> bsdf_kinds = filled(true);
 
     // Every feature on: the generic program, for --no-specialize.
     static SceneFeatures all() { return SceneFeatures{}; }
+
+private:
+    static std::array<bool, WF_BSDF_KIND_COUNT> filled(bool on) {
+        std::array<bool, WF_BSDF_KIND_COUNT> a;
+        a.fill(on);
+        return a;
+    }
 };
 
 SceneFeatures scene_features(const Scene& scene);
 
-// The program's build options: -DWF_HAS_<FEATURE>=0|1 for each.
+// The program's build options: -DWF_HAS_<FEATURE>=0|1 for each, and
+// -DWF_HAS_BSDF_<KIND>=0|1 for each BSDF kind.
 std::string feature_defines(const SceneFeatures& features);
 
 // "textures, normal maps, ..." or "none".

@@ -22,6 +22,7 @@
 #include "common/first_hit_aovs.h"
 #include "common/sample_values.h"
 #include "materials/surface_material.h"
+#include "bsdf/kinds.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 
@@ -89,8 +90,23 @@ inline bool same_side(float3 geometric_normal, float3 w, float local_z) {
     return (g > 0.0f && local_z > 0.0f) || (g < 0.0f && local_z < 0.0f);
 }
 
-inline uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
-                       const FilmBuffers* film) {
+/* What the surface hands on to the scatter, around the BSDF core. */
+typedef struct ShadeContext {
+    BsdfQuery query;
+    uint kind; /* WF_BSDF_*: whose core answers the query */
+    float3 position, position_error, geometric_normal; /* geometric_normal on the frame's side */
+    ShadingFrame frame;
+    float3 throughput;
+    uint depth;
+    LightSample light; /* valid where query.light */
+} ShadeContext;
+
+/* The surface: what the ray found (the environment on a miss, emission on a
+ * hit, weighed by MIS), then, unless the path ends here, the shading frame,
+ * the BSDF's parameters and the light sample: the BSDF core's query.
+ * Returns whether the path needs the core. */
+inline bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                          const FilmBuffers* film, ShadeContext* c) {
     const float4 hit = path->hit[slot];
     const int triangle = path_hit_triangle(path, slot);
     const float4 ray = path->ray_direction[slot];
@@ -112,7 +128,7 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
                              environment_radiance(params->environment, scene->environment_texels, direction));
         }
 #endif
-        return WF_SHADE_FINISHED;
+        return false;
     }
 
     const uint sample = current.sample;
@@ -137,40 +153,59 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
         add_radiance(path, params, film, slot, pixel, depth, weight * throughput * surface_emission(m, scene, &point));
     }
-    if (depth >= params->max_depth) return WF_SHADE_FINISHED;
+    if (depth >= params->max_depth) return false;
 
-    const BsdfParams bsdf = surface_bsdf(m, scene, &point, params->hemisphere);
+    BsdfQuery* q = &c->query;
+    q->params = surface_bsdf(m, scene, &point, params->hemisphere);
+    c->kind = m->bsdf_kind;
     /* An opaque or thin-walled surface is shaded on the side the ray arrived
      * from; a solid transmissive one keeps its front (counter-clockwise) side
      * as +z, so that wo.z < 0 says the ray arrived from inside. */
-    const bool flip = bsdf_has_inside(&bsdf) && !s.front_face;
-    ShadingFrame frame;
-    frame.z = flip ? -s.shading_normal : s.shading_normal;
-    const float3 geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;
-    orthonormal_basis(frame.z, &frame.x, &frame.y);
-    const float3 wo = to_local(&frame, -direction);
-    const BsdfAtWo at_wo = bsdf_at_wo(&bsdf, wo); /* once, for both techniques */
-    uint outcome = WF_SHADE_FINISHED;
-    float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
+    const bool flip = bsdf_has_inside(&q->params) && !s.front_face;
+    c->frame.z = flip ? -s.shading_normal : s.shading_normal;
+    c->geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;
+    orthonormal_basis(c->frame.z, &c->frame.x, &c->frame.y);
+    q->wo = to_local(&c->frame, -direction);
+    c->position = s.position;
+    c->position_error = s.position_error;
+    c->throughput = throughput;
+    c->depth = depth;
 
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */
-    if (params->light_count > 0u && !bsdf_is_delta(&bsdf)) {
+    q->light = params->light_count > 0u && !bsdf_is_delta(&q->params);
+    q->wi_light = (float3)(0.0f, 0.0f, 1.0f);
+    if (q->light) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-        const LightSample ls = sample_light(params, scene, s.position, u);
-        const float3 wi = to_local(&frame, ls.wi);
-        const bool counted = ls.delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
-        float pdf_bsdf;
-        const float3 f = bsdf_eval_pdf_at(&bsdf, &at_wo, wo, wi, &pdf_bsdf);
-        if (counted && ls.pdf > 0.0f && same_side(geometric_normal, ls.wi, wi.z)) {
-            const float weight =
-                params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls.delta ? power_heuristic(ls.pdf, pdf_bsdf) : 1.0f;
-            const float3 contribution = throughput * f * ls.radiance * (fabs(wi.z) * weight / ls.pdf);
+        c->light = sample_light(params, scene, s.position, u);
+        q->wi_light = to_local(&c->frame, c->light.wi);
+    }
+    q->u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF).xyz; /* .w: roulette's */
+    return true;
+}
+
+/* The scatter: the shadow ray of the light sample, weighed by MIS, and the
+ * continuation ray of the BSDF sample, into the path state; returns
+ * WF_SHADE_* of what follows. */
+inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
+                          const BsdfAnswer* a) {
+    const BsdfQuery* q = &c->query;
+    uint outcome = WF_SHADE_FINISHED;
+    float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
+    if (q->light) {
+        const LightSample* ls = &c->light;
+        const bool counted = ls->delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
+        if (counted && ls->pdf > 0.0f && same_side(c->geometric_normal, ls->wi, q->wi_light.z)) {
+            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls->delta
+                                     ? power_heuristic(ls->pdf, a->pdf_light)
+                                     : 1.0f;
+            const float3 contribution =
+                c->throughput * a->f_light * ls->radiance * (fabs(q->wi_light.z) * weight / ls->pdf);
             if (any(contribution > 0.0f) && is_finite3(contribution)) {
-                const float3 origin = offset_ray_origin(s.position, s.position_error, geometric_normal, ls.wi);
+                const float3 origin = offset_ray_origin(c->position, c->position_error, c->geometric_normal, ls->wi);
                 path->shadow_origin[slot] = (float4)(origin, 0.0f);
                 path->shadow_segment[slot] =
-                    (float4)(light_shadow_segment(&ls, origin, 2.0f * params->scene_diameter), 0.0f);
+                    (float4)(light_shadow_segment(ls, origin, 2.0f * params->scene_diameter), 0.0f);
                 shadow_light = contribution;
                 outcome |= WF_SHADE_SHADOW_RAY;
             }
@@ -178,23 +213,32 @@ inline uint shade_path(PathState* path, const RenderParams* params, uint slot, c
     }
 
     /* The continuation, by BSDF sampling. */
-    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF); /* u.w: roulette's */
-    const BsdfSample bs = bsdf_sample_at(&bsdf, &at_wo, wo, u.xyz);
-    const float3 wi = from_local(&frame, bs.wi);
-    if (bs.pdf > 0.0f && same_side(geometric_normal, wi, bs.wi.z)) {
-        const float3 weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
+    const BsdfSample* bs = &a->sample;
+    const float3 wi = from_local(&c->frame, bs->wi);
+    if (bs->pdf > 0.0f && same_side(c->geometric_normal, wi, bs->wi.z)) {
+        const float3 weight = bs->f * (fabs(bs->wi.z) / bs->pdf);
         if (any(weight > 0.0f) && is_finite3(weight)) {
-            set_path_throughput(path, slot, throughput * weight, depth + 1u);
-            path->ray_origin[slot] = (float4)(offset_ray_origin(s.position, s.position_error, geometric_normal, wi), 0.0f);
-            path->ray_direction[slot] = (float4)(wi, bs.delta ? 0.0f : bs.pdf);
+            set_path_throughput(path, slot, c->throughput * weight, c->depth + 1u);
+            path->ray_origin[slot] =
+                (float4)(offset_ray_origin(c->position, c->position_error, c->geometric_normal, wi), 0.0f);
+            path->ray_direction[slot] = (float4)(wi, bs->delta ? 0.0f : bs->pdf);
             outcome |= WF_SHADE_CONTINUES;
         }
     }
     /* What intersect_shadow needs to send the path on: the bounce layer the
      * light joins if it arrives, and whether the path goes on after it. */
     if (outcome & WF_SHADE_SHADOW_RAY)
-        set_shadow_light(path, slot, shadow_light, depth + 1u, (outcome & WF_SHADE_CONTINUES) != 0u);
+        set_shadow_light(path, slot, shadow_light, c->depth + 1u, (outcome & WF_SHADE_CONTINUES) != 0u);
     return outcome;
+}
+
+/* The whole stage for one path: surface, the core at width 1, scatter. */
+inline uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                       const FilmBuffers* film) {
+    ShadeContext c;
+    if (!shade_surface(path, params, slot, scene, film, &c)) return WF_SHADE_FINISHED;
+    const BsdfAnswer a = bsdf_core(c.kind, &c.query);
+    return shade_scatter(path, params, slot, &c, &a);
 }
 
 #endif

@@ -37,15 +37,15 @@ void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& ca
 
 TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
-    EXPECT_EQ(describe_features(scene_features(cornell)), "emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(cornell)), "opaque BSDF, emissive triangles");
     EXPECT_EQ(feature_defines(scene_features(cornell)),
-              "-DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
+              "-DWF_HAS_BSDF_GENERAL=0 -DWF_HAS_BSDF_OPAQUE=1 -DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
               "-DWF_HAS_EMISSIVE_TRIANGLES=1 "
               "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0");
     const Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
-    EXPECT_EQ(describe_features(scene_features(helmet)), "textures, normal maps, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(helmet)), "opaque BSDF, textures, normal maps, emissive triangles");
     EXPECT_EQ(describe_features(SceneFeatures::all()),
-              "textures, normal maps, alpha mask, vertex colours, emissive triangles, punctual lights, environment");
+              "general BSDF, opaque BSDF, textures, normal maps, alpha mask, vertex colours, emissive triangles, punctual lights, environment");
 }
 
 TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {

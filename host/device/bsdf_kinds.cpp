@@ -1,0 +1,19 @@
+// bsdf_kinds.cpp — which BSDF kind shades a material.
+#include "device/bsdf_kinds.h"
+
+namespace wf {
+
+uint32_t bsdf_kind_of(const SceneMaterial& m) {
+    const bool sheen = m.sheen_color.r > 0.0f || m.sheen_color.g > 0.0f || m.sheen_color.b > 0.0f;
+    if (m.transmission > 0.0f || m.clearcoat > 0.0f || sheen) return WF_BSDF_GENERAL;
+    return WF_BSDF_OPAQUE;
+}
+
+const char* bsdf_kind_name(uint32_t kind) {
+#define WF_BSDF_KIND_NAME(id, name, what) name,
+    static constexpr const char* kNames[WF_BSDF_KIND_COUNT] = {WF_BSDF_KINDS(WF_BSDF_KIND_NAME)};
+#undef WF_BSDF_KIND_NAME
+    return kind < WF_BSDF_KIND_COUNT ? kNames[kind] : "unknown";
+}
+
+} // namespace wf

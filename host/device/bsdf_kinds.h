@@ -1,0 +1,19 @@
+// bsdf_kinds.h — which BSDF kind (include/wavefront/bsdf_kinds.h) shades a
+// material: the narrowest whose lobes cover every value its factors and
+// textures can take. A texture only scales its factor, so a factor of 0 rules
+// its lobe out at every point.
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene.h"
+#include "wavefront/bsdf_kinds.h"
+
+namespace wf {
+
+uint32_t bsdf_kind_of(const SceneMaterial& m);
+
+// The kind's name, as the report and the program's defines spell it.
+const char* bsdf_kind_name(uint32_t kind);
+
+} // namespace wf

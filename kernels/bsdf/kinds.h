@@ -1,0 +1,101 @@
+/* kinds.h — the BSDF kinds (include/wavefront/bsdf_kinds.h) a program holds:
+ * each written once in the lane vocabulary (lanes/lanes.h) and expanded here at
+ * width 1, and at WF_LANE_WIDTH where the group schedule shades in lanes; and
+ * the BSDF core of one path at width 1, which dispatches on the material's
+ * kind: what the shade stage calls between the surface and the scatter
+ * (stages/shade.h). The general BSDF (bsdf/bsdf.h) is the kind of the
+ * materials no other covers, and the oracle the others are tested against. */
+#ifndef WF_BSDF_KINDS_H
+#define WF_BSDF_KINDS_H
+
+#include "compiled_features.h"
+#include "wavefront/bsdf_kinds.h"
+#include "bsdf/bsdf.h"
+#include "lanes/lanes.h"
+
+#if WF_HAS_BSDF_OPAQUE
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "bsdf/kinds/opaque.inc"
+#undef WF_W
+/* The group schedule's lanes: the host sets WF_LANE_WIDTH from the device's
+ * native float vector width (8 for AVX2, 16 for AVX-512). */
+#if defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1
+#define WF_W WF_LANE_WIDTH
+#include "lanes/lane_width.inc"
+#include "bsdf/kinds/opaque.inc"
+#undef WF_W
+#endif
+#endif
+
+/* What the BSDF core takes at one shading point and gives back: the BSDF at
+ * the light sample's direction, and a sampled continuation. */
+typedef struct BsdfQuery {
+    BsdfParams params;
+    float3 wo, wi_light; /* local frame */
+    float3 u;            /* BSDF sampling's three numbers */
+    bool light;          /* there is a light sample to evaluate (width 1 skips it otherwise) */
+} BsdfQuery;
+
+typedef struct BsdfAnswer {
+    float3 f_light; /* at wi_light, without the cosine */
+    float pdf_light;
+    BsdfSample sample;
+} BsdfAnswer;
+
+#if WF_HAS_BSDF_OPAQUE
+inline OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
+    OpaqueParams_x1 p;
+    p.base_color = rgb_from_float3(b->base_color);
+    p.metallic = b->metallic;
+    p.roughness = b->roughness;
+    p.specular = b->specular;
+    p.specular_color = rgb_from_float3(b->specular_color);
+    p.ior = b->ior;
+    return p;
+}
+
+inline BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
+    const OpaqueParams_x1 p = opaque_params_x1(&q->params);
+    const lvec1 wo = vec_from_float3(q->wo);
+    const OpaqueAtWo_x1 at = opaque_at_wo_x1(&p, wo);
+    BsdfAnswer a;
+    a.f_light = (float3)(0.0f);
+    a.pdf_light = 0.0f;
+    if (q->light)
+        a.f_light = rgb_to_float3(
+            opaque_eval_pdf_x1(&p, &at, wo, vec_from_float3(q->wi_light), q->params.hemisphere, &a.pdf_light));
+    lvec1 wi;
+    int delta;
+    a.sample.f = rgb_to_float3(opaque_sample_x1(&p, &at, wo, vec_from_float3(q->u), q->params.hemisphere, &wi,
+                                                &a.sample.pdf, &delta));
+    a.sample.wi = vec_to_float3(wi);
+    a.sample.delta = delta;
+    return a;
+}
+#endif
+
+#if WF_HAS_BSDF_GENERAL || !WF_HAS_BSDF_OPAQUE
+inline BsdfAnswer general_core(const BsdfQuery* q) {
+    const BsdfAtWo at = bsdf_at_wo(&q->params, q->wo); /* once, for both techniques */
+    BsdfAnswer a;
+    a.f_light = (float3)(0.0f);
+    a.pdf_light = 0.0f;
+    if (q->light) a.f_light = bsdf_eval_pdf_at(&q->params, &at, q->wo, q->wi_light, &a.pdf_light);
+    a.sample = bsdf_sample_at(&q->params, &at, q->wo, q->u);
+    return a;
+}
+#endif
+
+/* The core at width 1, by the material's kind. */
+inline BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
+#if WF_HAS_BSDF_OPAQUE && (WF_HAS_BSDF_GENERAL)
+    return kind == WF_BSDF_OPAQUE ? opaque_core_x1(q) : general_core(q);
+#elif WF_HAS_BSDF_OPAQUE
+    return opaque_core_x1(q);
+#else
+    return general_core(q);
+#endif
+}
+
+#endif
