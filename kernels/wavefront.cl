@@ -15,6 +15,7 @@
 #include "stages/intersect.h"
 #include "stages/sort_by_material.h"
 #include "stages/shade.h"
+#include "bsdf/kind_lanes.h"
 #include "stages/intersect_shadow.h"
 #include "stages/roulette.h"
 #include "stages/accumulate.h"
@@ -132,8 +133,15 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     __local LocalQueue extend, shadow, proceed, finish, next_extend;
     __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
+#ifdef WF_GROUP_LANES
+    __local float lanes[WF_LANE_FIELDS * WF_LANE_CAPACITY];
+    __local uint lanes_length;
+#endif
     const uint lid = get_local_id(0);
     if (lid == 0) extend.length = shadow.length = proceed.length = finish.length = next_extend.length = 0u;
+#ifdef WF_GROUP_LANES
+    if (lid == 0) lanes_length = 0u;
+#endif
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
@@ -143,9 +151,37 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     for (uint extending; (extending = extend.length) > 0u;) {
         if (lid < extending) intersect_path(&path, extend.slots[lid], &scene);
         barrier(CLK_LOCAL_MEM_FENCE);
+#ifdef WF_GROUP_LANES
+        /* Shade in three steps: each path's surface, whose queries of the
+         * laned kind wait in local memory; those answered WF_LANE_WIDTH paths
+         * a work-item (bsdf/kind_lanes.h); each path's scatter. */
+        ShadeContext shading;
+        BsdfAnswer answer;
+        bool needs_core = false;
+        uint lane_at = WF_LANE_CAPACITY; /* none */
+        if (lid < extending) {
+            needs_core = shade_surface(&path, &params, extend.slots[lid], &scene, &film, &shading);
+            if (needs_core && shading.kind == WF_BSDF_OPAQUE) {
+                lane_at = atomic_inc(&lanes_length);
+                bsdf_lanes_put(lanes, lane_at, &shading.query);
+            } else if (needs_core) {
+                answer = bsdf_core(shading.kind, &shading.query);
+            }
+        }
+        barrier(CLK_LOCAL_MEM_FENCE);
+        if (lid * WF_LANE_WIDTH < lanes_length)
+            bsdf_lanes_answer(lanes, lid * WF_LANE_WIDTH, lanes_length, params.hemisphere);
+        barrier(CLK_LOCAL_MEM_FENCE);
+#endif
         if (lid < extending) {
             const uint slot = extend.slots[lid];
+#ifdef WF_GROUP_LANES
+            if (lane_at < WF_LANE_CAPACITY) answer = bsdf_lanes_get(lanes, lane_at);
+            const uint outcome =
+                needs_core ? shade_scatter(&path, &params, slot, &shading, &answer) : WF_SHADE_FINISHED;
+#else
             const uint outcome = shade_path(&path, &params, slot, &scene, &film);
+#endif
             ++closest_rays;
             /* As in shade: a path with a shadow ray waits for it. */
             if (outcome & WF_SHADE_SHADOW_RAY) local_push(&shadow, slot);
@@ -175,6 +211,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         if (lid == 0) {
             extend.length = continuing;
             shadow.length = proceed.length = finish.length = next_extend.length = 0u;
+#ifdef WF_GROUP_LANES
+            lanes_length = 0u;
+#endif
         }
         barrier(CLK_LOCAL_MEM_FENCE);
     }

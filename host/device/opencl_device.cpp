@@ -79,6 +79,7 @@ std::vector<DeviceInfo> list_devices() {
             info.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
             info.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
             info.max_allocation = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+            info.native_float_width = d.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
             info.device = d;
             result.push_back(info);
         }

@@ -20,6 +20,7 @@ struct DeviceInfo {
     unsigned compute_units = 0;
     unsigned long long global_memory = 0;
     unsigned long long max_allocation = 0;
+    unsigned native_float_width = 1; // floats in one of its vector registers (8 for AVX2, 16 for AVX-512)
     cl::Device device;
 };
 

@@ -36,6 +36,14 @@ Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) 
                                                : settings.schedule;
 }
 
+// The group schedule's lanes: as asked, or the device's native float vector
+// width, 8 or 16 (AVX2, AVX-512); 1 (no lanes) on devices of narrower vectors,
+// GPUs among them, whose work-items are lanes already.
+unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings) {
+    if (settings.lane_width != 0) return settings.lane_width;
+    return device.native_float_width >= 16 ? 16u : device.native_float_width >= 8 ? 8u : 1u;
+}
+
 } // namespace
 
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
@@ -50,10 +58,13 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
     if (settings.aovs) options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
         options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
+    const bool group = settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group;
     // The scan and the group schedule size their local arrays by the launch's local size.
-    if (settings.queue_push == QueuePush::Scan ||
-        (settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group))
+    if (settings.queue_push == QueuePush::Scan || group)
         options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
+    if (const unsigned lanes = lane_width(device.info, settings); group && lanes > 1)
+        options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
     return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
 }
 

@@ -56,11 +56,12 @@ TEST(Determinism, RoundsDoNotChangeOneBit) {
     EXPECT_TRUE(same_bytes(render_cornell(1200, 64, 3), progressive.read().mean));
 }
 
-// Every schedule, queue-push strategy and the megakernel run the same stage functions in the same
-// order along each path, and a pixel's samples are still added in order by
-// its one slot: the bytes are the same, on a scene that uses every kind of
-// work (glossy and glass bounces, shadow rays, roulette) and with a pool
-// smaller than the image, so slots own several pixels.
+// Every schedule, queue-push strategy and the megakernel run the same stage
+// functions in the same order along each path, a BSDF kind's lanes give its
+// width-1 bits, and a pixel's samples are still added in order by its one
+// slot: the bytes are the same, on a scene that uses every kind of work
+// (glossy and glass bounces, shadow rays, roulette; opaque and general BSDF
+// kinds) and with a pool smaller than the image, so slots own several pixels.
 class ScheduleDeterminism : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
@@ -83,6 +84,12 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     settings.local_size = 128;
     EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean)) << "group, local size 128";
     settings.local_size = RenderSettings{}.local_size;
+    for (const uint32_t width : {1u, 8u, 16u}) { // its BSDF lanes (kernels/bsdf/kind_lanes.h), none to sixteen
+        settings.lane_width = width;
+        EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean))
+            << "group, lane width " << width;
+    }
+    settings.lane_width = RenderSettings{}.lane_width;
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
         settings.queue_push = push;
