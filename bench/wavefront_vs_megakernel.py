@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """wavefront_vs_megakernel.py -- issue 16's comparison: the wavefront's
-schedules (refill, the default, also with its extension queue sorted by
-material; group, every stage inside each work-group) against the megakernel on the three target scenes, interleaved round by round
+schedules (refill, also with its extension queue sorted by material; group,
+every stage inside each work-group, with its BSDF lanes and without) against
+the megakernel on the three target scenes, interleaved round by round
 so that the machine's load falls on all of them alike. Rates are samples over
 the render's wall time, from `wavefront render --stats-json`; each setup's
 kernels are compiled by a 1-spp render first (bench/throughput.py's render).
@@ -27,7 +28,8 @@ SCENES = [  # name, path from the repository root, spp
 CONFIGS = [  # label, flags; the megakernel last
     ("refill", ["--schedule", "refill"]),
     ("refill, sorted", ["--schedule", "refill", "--sort-materials"]),
-    ("group", ["--schedule", "group"]),
+    ("group, no lanes", ["--schedule", "group", "--lane-width", "1"]),
+    ("group", ["--schedule", "group"]),  # BSDF lanes as wide as the device's vectors
     ("megakernel", ["--integrator", "megakernel"]),
 ]
 

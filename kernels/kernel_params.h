@@ -11,9 +11,10 @@
 #ifndef WF_KERNEL_PARAMS_H
 #define WF_KERNEL_PARAMS_H
 
-#include "path_state.h"
-#include "scene.h"
-#include "film.h"
+#include "path_view.h"
+#include "scene_view.h"
+#include "film_view.h"
+#include "wavefront/counters.h"
 
 /* Parameters are prefixed so that a stage's locals (hit, pixel, ...) never
  * shadow them. */

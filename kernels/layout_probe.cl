@@ -2,7 +2,7 @@
  * shared structs, in the order of include/wavefront/layout_fields.h, for the
  * host to compare with its own (host/device/layout_check.cpp). */
 #include "wavefront/scene_types.h"
-#include "wavefront/path_state.h"
+#include "wavefront/render_params.h"
 #include "wavefront/layout_fields.h"
 
 #define WF_DEVICE_OFFSETOF(S, m) ((uint)(size_t) & (((__global S*)0)->m))

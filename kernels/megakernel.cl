@@ -1,8 +1,9 @@
 /* megakernel.cl — the same path tracer as wavefront.cl, in one kernel: each
  * work-item takes its slot's next sample through the stage functions in turn
  * (start_camera_sample, intersect_path, shade_path, trace_shadow_ray,
- * survives_roulette, accumulate_path) until the path ends, then adds it to its
- * pixel. The functions and their order along a path are the wavefront's, and
+ * roulette_path, accumulate_path), each returning the queue of the stage that
+ * comes next (wavefront/stage_graph.h), until the path is finished, then adds
+ * it to its pixel. The functions and their order along a path are the wavefront's, and
  * the path state lives in the same arrays, so the two integrators give the
  * same bytes; what differs is only how work is grouped into launches (Laine,
  * Karras and Aila, "Megakernels Considered Harmful", HPG 2013). */
@@ -25,16 +26,22 @@ __kernel void megakernel(WF_STAGE_PARAMS) {
     uint closest_rays = 0u, shadow_rays = 0u;
     bool nonfinite = false;
     if (started) {
-        for (;;) {
-            intersect_path(&path, slot, &scene);
-            ++closest_rays;
-            const uint outcome = shade_path(&path, &params, slot, &scene, &film);
-            bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
-            if (outcome & WF_SHADE_SHADOW_RAY) {
-                continues = trace_shadow_ray(&path, &params, slot, &scene, &film);
+        /* The wavefront's queues, one path at a time: where it goes next. */
+        for (uint queue = WF_QUEUE_EXTEND; queue != WF_QUEUE_FINISHED;) {
+            switch (queue) {
+            case WF_QUEUE_EXTEND:
+                intersect_path(&path, slot, &scene);
+                ++closest_rays;
+                queue = shade_path(&path, &params, slot, &scene, &film);
+                break;
+            case WF_QUEUE_SHADOW:
                 ++shadow_rays;
+                queue = trace_shadow_ray(&path, &params, slot, &scene, &film);
+                break;
+            default: /* WF_QUEUE_CONTINUE */
+                queue = roulette_path(&path, &params, slot);
+                break;
             }
-            if (!continues || !survives_roulette(&path, &params, slot)) break;
         }
         nonfinite = accumulate_path(&path, &params, slot, &film);
     }

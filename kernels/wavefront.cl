@@ -4,11 +4,12 @@
  *   generate → intersect → shade → intersect_shadow → roulette → accumulate
  *
  * Each kernel takes the one parameter list of kernel_params.h, finds its path
- * slot in the queue it consumes (include/wavefront/path_state.h), calls its
- * stage function (stages/), and appends the slot to the queue that comes
- * next. The stage functions are the megakernel's too (megakernel.cl);
- * host/integrator/wavefront_scheduler.cpp launches these. group_wavefront,
- * last, runs the same stages inside each work-group, over local queues. */
+ * slot in the queue it consumes (the stage list of wavefront/stage_graph.h),
+ * calls its stage function (stages/), and appends the slot to the queue that
+ * function returns. The stage functions are the megakernel's too
+ * (megakernel.cl); host/integrator/wavefront_scheduler.cpp launches these.
+ * group_wavefront, last, runs the same stages inside each work-group, over
+ * local queues indexed by the same queue ids. */
 #include "kernel_params.h"
 #include "common/queue_push.h"
 #include "stages/generate.h"
@@ -59,22 +60,18 @@ __kernel void scatter_materials(WF_STAGE_PARAMS, __global uint* key_starts, __gl
                    sorted);
 }
 
+/* Each kernel pushes its paths to the queues its stage function returns, every
+ * work-item to each of the stage's next queues in turn (the pushes hold barriers). */
 __kernel void shade(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint outcome = active ? shade_path(&path, &params, slot, &scene, &film) : WF_SHADE_FINISHED;
-    /* Each path goes to exactly one queue: one with a shadow ray waits for it
-     * (intersect_shadow sends it on), so no stage can overwrite the pending
-     * ray whatever order the scheduler launches them in. */
-    const bool shadow_ray = (outcome & WF_SHADE_SHADOW_RAY) != 0u;
-    const bool continues = (outcome & WF_SHADE_CONTINUES) != 0u;
+    const uint next = active ? shade_path(&path, &params, slot, &scene, &film) : WF_QUEUE_COUNT;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot, shadow_ray, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, !shadow_ray && continues, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !shadow_ray && !continues,
-               scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot, next == WF_QUEUE_SHADOW, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next == WF_QUEUE_CONTINUE, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, next == WF_QUEUE_FINISHED, scratch);
 }
 
 __kernel void intersect_shadow(WF_STAGE_PARAMS) {
@@ -82,10 +79,10 @@ __kernel void intersect_shadow(WF_STAGE_PARAMS) {
     __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_SHADOW, &slot);
-    const bool continues = active && trace_shadow_ray(&path, &params, slot, &scene, &film);
+    const uint next = active ? trace_shadow_ray(&path, &params, slot, &scene, &film) : WF_QUEUE_COUNT;
     group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], active ? 1u : 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, continues, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !continues, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next == WF_QUEUE_CONTINUE, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, next == WF_QUEUE_FINISHED, scratch);
 }
 
 __kernel void roulette(WF_STAGE_PARAMS) {
@@ -93,9 +90,9 @@ __kernel void roulette(WF_STAGE_PARAMS) {
     __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_CONTINUE, &slot);
-    const bool survives = active && survives_roulette(&path, &params, slot);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, survives, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, active && !survives, scratch);
+    const uint next = active ? roulette_path(&path, &params, slot) : WF_QUEUE_COUNT;
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_EXTEND, slot, next == WF_QUEUE_EXTEND, scratch);
+    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, next == WF_QUEUE_FINISHED, scratch);
 }
 
 __kernel void accumulate(WF_STAGE_PARAMS) {
@@ -130,7 +127,7 @@ inline void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&
 
 __kernel void group_wavefront(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
-    __local LocalQueue extend, shadow, proceed, finish, next_extend;
+    __local LocalQueue queue[WF_QUEUE_COUNT]; /* the global queues' local twins, by QueueId */
     __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
 #ifdef WF_GROUP_LANES
@@ -138,18 +135,20 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     __local uint lanes_length;
 #endif
     const uint lid = get_local_id(0);
-    if (lid == 0) extend.length = shadow.length = proceed.length = finish.length = next_extend.length = 0u;
-#ifdef WF_GROUP_LANES
-    if (lid == 0) lanes_length = 0u;
-#endif
+    if (lid < WF_QUEUE_COUNT) queue[lid].length = 0u;
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
-    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own)) local_push(&extend, own);
+    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own))
+        local_push(&queue[WF_QUEUE_EXTEND], own);
+    /* by the entries this work-item took: */
+    uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u, lane_paths = 0u, lane_slots = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
-    uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u; /* by the entries this work-item took */
-    for (uint extending; (extending = extend.length) > 0u;) {
-        if (lid < extending) intersect_path(&path, extend.slots[lid], &scene);
+    for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
+        if (lid < extending) intersect_path(&path, queue[WF_QUEUE_EXTEND].slots[lid], &scene);
+#ifdef WF_GROUP_LANES
+        if (lid == 0) lanes_length = 0u;
+#endif
         barrier(CLK_LOCAL_MEM_FENCE);
 #ifdef WF_GROUP_LANES
         /* Shade in three steps: each path's surface, whose queries of the
@@ -160,7 +159,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         bool needs_core = false;
         uint lane_at = WF_LANE_CAPACITY; /* none */
         if (lid < extending) {
-            needs_core = shade_surface(&path, &params, extend.slots[lid], &scene, &film, &shading);
+            needs_core = shade_surface(&path, &params, queue[WF_QUEUE_EXTEND].slots[lid], &scene, &film, &shading);
             if (needs_core && shading.kind == WF_BSDF_OPAQUE) {
                 lane_at = atomic_inc(&lanes_length);
                 bsdf_lanes_put(lanes, lane_at, &shading.query);
@@ -169,57 +168,52 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             }
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid * WF_LANE_WIDTH < lanes_length)
+        if (lid * WF_LANE_WIDTH < lanes_length) {
             bsdf_lanes_answer(lanes, lid * WF_LANE_WIDTH, lanes_length, params.hemisphere);
+            lane_paths += min((uint)WF_LANE_WIDTH, lanes_length - lid * WF_LANE_WIDTH);
+            lane_slots += WF_LANE_WIDTH;
+        }
         barrier(CLK_LOCAL_MEM_FENCE);
 #endif
         if (lid < extending) {
-            const uint slot = extend.slots[lid];
+            const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
 #ifdef WF_GROUP_LANES
             if (lane_at < WF_LANE_CAPACITY) answer = bsdf_lanes_get(lanes, lane_at);
-            const uint outcome =
-                needs_core ? shade_scatter(&path, &params, slot, &shading, &answer) : WF_SHADE_FINISHED;
+            const uint next = needs_core ? shade_scatter(&path, &params, slot, &shading, &answer) : WF_QUEUE_FINISHED;
 #else
-            const uint outcome = shade_path(&path, &params, slot, &scene, &film);
+            const uint next = shade_path(&path, &params, slot, &scene, &film);
 #endif
             ++closest_rays;
-            /* As in shade: a path with a shadow ray waits for it. */
-            if (outcome & WF_SHADE_SHADOW_RAY) local_push(&shadow, slot);
-            else local_push((outcome & WF_SHADE_CONTINUES) ? &proceed : &finish, slot);
+            local_push(&queue[next], slot);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid < shadow.length) {
-            const uint slot = shadow.slots[lid];
+        /* The extension queue is consumed: roulette refills it. */
+        if (lid == 0) queue[WF_QUEUE_EXTEND].length = 0u;
+        if (lid < queue[WF_QUEUE_SHADOW].length) {
+            const uint slot = queue[WF_QUEUE_SHADOW].slots[lid];
             ++shadow_rays;
-            local_push(trace_shadow_ray(&path, &params, slot, &scene, &film) ? &proceed : &finish, slot);
+            local_push(&queue[trace_shadow_ray(&path, &params, slot, &scene, &film)], slot);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid < proceed.length) {
-            const uint slot = proceed.slots[lid];
-            local_push(survives_roulette(&path, &params, slot) ? &next_extend : &finish, slot);
+        if (lid < queue[WF_QUEUE_CONTINUE].length) {
+            const uint slot = queue[WF_QUEUE_CONTINUE].slots[lid];
+            local_push(&queue[roulette_path(&path, &params, slot)], slot);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid < finish.length) {
-            const uint slot = finish.slots[lid];
+        if (lid < queue[WF_QUEUE_FINISHED].length) {
+            const uint slot = queue[WF_QUEUE_FINISHED].slots[lid];
             nonfinite += accumulate_path(&path, &params, slot, &film) ? 1u : 0u;
             atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        const uint continuing = next_extend.length;
-        if (lid < continuing) extend.slots[lid] = next_extend.slots[lid];
-        barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid == 0) {
-            extend.length = continuing;
-            shadow.length = proceed.length = finish.length = next_extend.length = 0u;
-#ifdef WF_GROUP_LANES
-            lanes_length = 0u;
-#endif
-        }
+        if (lid == 0) queue[WF_QUEUE_SHADOW].length = queue[WF_QUEUE_CONTINUE].length = queue[WF_QUEUE_FINISHED].length = 0u;
         barrier(CLK_LOCAL_MEM_FENCE);
     }
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
     group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite, scratch);
+    group_atomic_add(&counters[WF_COUNTER_LANE_PATHS], lane_paths, scratch);
+    group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
 }

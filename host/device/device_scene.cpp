@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "base/alias_table.h"
-#include "device/bsdf_kinds.h"
+#include "device/bsdf_kind_choice.h"
 #include "device/device_buffer.h"
 #include "scene/environment_map.h"
 

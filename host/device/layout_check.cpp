@@ -9,7 +9,7 @@
 #include "base/errors.h"
 #include "device/kernel_program.h"
 #include "wavefront/layout_fields.h"
-#include "wavefront/path_state.h"
+#include "wavefront/render_params.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "device/bsdf_kinds.h"
+#include "device/bsdf_kind_choice.h"
 #include "scene/environment_map.h"
 
 namespace wf {

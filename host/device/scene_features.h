@@ -23,7 +23,7 @@ struct SceneFeatures {
     bool emissive_triangles = true; // any triangle emits
     bool punctual_lights = true;    // KHR_lights_punctual
     bool environment = true;        // an environment light
-    // Which BSDF kinds its materials have (host/device/bsdf_kinds.h), by WF_BSDF_*.
+    // Which BSDF kinds its materials have (host/device/bsdf_kind_choice.h), by WF_BSDF_*.
     std::array<bool, WF_BSDF_KIND_COUNT> bsdf_kinds = filled(true);
 
     // Every feature on: the generic program, for --no-specialize.

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "wavefront/path_state.h"
+#include "wavefront/aovs.h"
 
 // Planes of one element per pixel in a buffer of each extent (film_buffers.h).
 #define WF_FILM_PLANES_PIXEL(bounce_layers, aovs) 1u

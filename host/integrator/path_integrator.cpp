@@ -10,9 +10,10 @@
 namespace wf {
 namespace {
 
-constexpr const char* kStageNames[STAGE_COUNT] = {"generate",   "intersect",        "shade",     "intersect_shadow",
-                                                  "roulette",   "accumulate",       "sort_by_material",
-                                                  "megakernel", "group_wavefront"};
+#define WF_STAGE_NAME(stage, kernel, queue) #kernel,
+constexpr const char* kStageNames[STAGE_COUNT] = {WF_STAGES(WF_STAGE_NAME) "sort_by_material", "megakernel",
+                                                  "group_wavefront"};
+#undef WF_STAGE_NAME
 
 double event_seconds(const cl::Event& e) {
     const cl_ulong start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();
@@ -43,6 +44,8 @@ void RenderStats::add(const RenderStats& o, bool with_counter_reads) {
     closest_rays += o.closest_rays;
     shadow_rays += o.shadow_rays;
     nonfinite_samples += o.nonfinite_samples;
+    lane_paths += o.lane_paths;
+    lane_slots += o.lane_slots;
     iterations += o.iterations;
     pool_size += o.pool_size;
     pool_bytes += o.pool_bytes;
@@ -153,6 +156,8 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
     stats_.shadow_rays += snapshot.shadow_rays;
     stats_.samples += snapshot.samples;
     stats_.nonfinite_samples += counters[WF_COUNTER_NONFINITE];
+    stats_.lane_paths += counters[WF_COUNTER_LANE_PATHS];
+    stats_.lane_slots += counters[WF_COUNTER_LANE_SLOTS];
     stats_.counter_reads.push_back(snapshot);
     ++stats_.iterations;
     for (const auto& [stage, event] : pending_) {

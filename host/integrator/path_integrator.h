@@ -13,6 +13,7 @@
 // the image: N samples in one round or in ten give the same bytes.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -26,23 +27,30 @@
 #include "integrator/path_pool.h"
 #include "integrator/render_settings.h"
 #include "integrator/stage_args.h"
-#include "wavefront/path_state.h"
+#include "wavefront/counters.h"
+#include "wavefront/render_params.h"
+#include "wavefront/stage_graph.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {
 
+// The stage kernels of the stage list (wavefront/stage_graph.h), then the
+// kernels that time several stages at once.
+#define WF_STAGE_ENUM(stage, kernel, queue) STAGE_##stage,
 enum Stage {
-    STAGE_GENERATE,
-    STAGE_INTERSECT,
-    STAGE_SHADE,
-    STAGE_INTERSECT_SHADOW,
-    STAGE_ROULETTE,
-    STAGE_ACCUMULATE,
+    WF_STAGES(WF_STAGE_ENUM)
     STAGE_SORT, // --sort-materials: three kernels (kernels/stages/sort_by_material.h)
     STAGE_MEGAKERNEL,
     STAGE_GROUP, // --schedule group: every stage in one kernel (group_wavefront)
     STAGE_COUNT
 };
+#undef WF_STAGE_ENUM
+constexpr int kStageKernels = STAGE_SORT; // the stage list's
+
+// The queue each stage of the list consumes.
+#define WF_STAGE_QUEUE(stage, kernel, queue) WF_QUEUE_##queue,
+constexpr QueueId kStageQueue[kStageKernels] = {WF_STAGES(WF_STAGE_QUEUE)};
+#undef WF_STAGE_QUEUE
 
 struct StageTime {
     const char* name = "";
@@ -58,13 +66,19 @@ struct CounterSnapshot {
     uint32_t pool_size = 0; // of the pool read
 
     // As a row of the statistics' table (the stats JSON, the Python module),
-    // in the order kColumns names: the queue lengths as read, then the work
-    // done since the previous read.
-    static constexpr std::array<const char*, 8> kColumns = {
-        "regenerate", "extend", "shadow", "continue", "finished", "closest_rays", "shadow_rays", "samples"};
+    // in the order kColumns names: the queue lengths as read (the stage
+    // graph's queues), then the work done since the previous read.
+#define WF_QUEUE_NAME(queue, name, what) name,
+    static constexpr std::array<const char*, WF_QUEUE_COUNT + 3> kColumns = {
+        WF_QUEUES(WF_QUEUE_NAME) "closest_rays", "shadow_rays", "samples"};
+#undef WF_QUEUE_NAME
     std::array<uint32_t, kColumns.size()> row() const {
-        return {queues[WF_QUEUE_REGENERATE], queues[WF_QUEUE_EXTEND], queues[WF_QUEUE_SHADOW],
-                queues[WF_QUEUE_CONTINUE],   queues[WF_QUEUE_FINISHED], closest_rays, shadow_rays, samples};
+        std::array<uint32_t, kColumns.size()> r{};
+        std::copy(queues.begin(), queues.end(), r.begin());
+        r[WF_QUEUE_COUNT] = closest_rays;
+        r[WF_QUEUE_COUNT + 1] = shadow_rays;
+        r[WF_QUEUE_COUNT + 2] = samples;
+        return r;
     }
 };
 
@@ -76,6 +90,7 @@ struct RenderStats {
     uint64_t closest_rays = 0;
     uint64_t shadow_rays = 0;
     uint64_t nonfinite_samples = 0;
+    uint64_t lane_paths = 0, lane_slots = 0; // the group schedule's BSDF lanes: paths in them, lanes taken
     uint64_t iterations = 0; // reads of the counters: wavefront iterations or steps, megakernel launches
     uint32_t pool_size = 0;
     size_t pool_bytes = 0;

@@ -26,7 +26,7 @@ public:
     void clear(const cl::CommandQueue& queue) const;
     // Sets how many samples each of the first started.size() slots has
     // started (a resumed render, a unit of work), in the w lane of `radiance`
-    // where the kernels keep it (kernels/path_state.h).
+    // where the kernels keep it (kernels/path_view.h).
     void restore_samples_started(const cl::CommandQueue& queue, const std::vector<uint32_t>& started) const;
 
     const cl::Buffer& field(PathField f) const { return fields_[static_cast<size_t>(f)]; }

@@ -11,7 +11,8 @@
 #include <string>
 #include <utility>
 
-#include "wavefront/path_state.h"
+#include "wavefront/aovs.h"
+#include "wavefront/techniques.h"
 
 namespace wf {
 

@@ -11,6 +11,7 @@
 #include "device/device_scene.h"
 #include "film/film.h"
 #include "integrator/path_pool.h"
+#include "wavefront/render_params.h"
 
 namespace wf {
 

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace wf {
 
@@ -100,29 +103,33 @@ void WavefrontScheduler::run_iterations(bool passes) {
 
 // Fullest first. Each queue has one consumer (EXTEND two: intersect, then
 // shade over the same slots), which takes it whole; its counter is then
-// zeroed. Ties go to the later stage, which brings paths nearer their end.
+// zeroed. Ties go to the later stage, which brings paths nearer their end:
+// the queues in the reverse of the order the stage list consumes them.
 void WavefrontScheduler::run_fullest_first() {
-    constexpr int kLaterFirst[WF_QUEUE_COUNT] = {WF_QUEUE_FINISHED, WF_QUEUE_CONTINUE, WF_QUEUE_SHADOW,
-                                                 WF_QUEUE_EXTEND, WF_QUEUE_REGENERATE};
+    std::vector<int> later_first;
+    for (int s = kStageKernels - 1; s >= 0; --s)
+        if (std::find(later_first.begin(), later_first.end(), kStageQueue[s]) == later_first.end())
+            later_first.push_back(kStageQueue[s]);
     std::array<cl_uint, WF_COUNTER_COUNT> counters{};
     counters[WF_QUEUE_REGENERATE] = params_.pool_size;
     for (;;) {
-        int fullest = kLaterFirst[0];
+        int fullest = later_first[0];
         if (stopping()) counters[WF_QUEUE_REGENERATE] = 0; // start nothing more
-        for (int q : kLaterFirst)
+        for (int q : later_first)
             if (counters[q] > counters[fullest]) fullest = q;
         const uint32_t items = counters[fullest];
         if (items == 0) break;
-        switch (fullest) {
-        case WF_QUEUE_REGENERATE: launch(STAGE_GENERATE, items); break;
-        case WF_QUEUE_EXTEND: extend(items); break;
-        case WF_QUEUE_SHADOW: launch(STAGE_INTERSECT_SHADOW, items); break;
-        case WF_QUEUE_CONTINUE: launch(STAGE_ROULETTE, items); break;
-        default: launch(STAGE_ACCUMULATE, items); break;
-        }
+        if (fullest == WF_QUEUE_EXTEND) extend(items);
+        else launch(consumer_of(static_cast<QueueId>(fullest)), items);
         device_.queue.enqueueFillBuffer(pool_.counters, 0u, fullest * sizeof(cl_uint), sizeof(cl_uint));
         counters = read_counters(WF_QUEUE_COUNT); // the statistics
     }
+}
+
+Stage WavefrontScheduler::consumer_of(QueueId queue) {
+    for (int s = 0; s < kStageKernels; ++s)
+        if (kStageQueue[s] == queue) return static_cast<Stage>(s);
+    throw std::logic_error("no stage consumes queue " + std::to_string(queue));
 }
 
 } // namespace wf

@@ -44,9 +44,10 @@ private:
     // Intersect and shade over `items` paths of the extension queue, sorted
     // by material between them when the settings ask.
     void extend(uint32_t items);
+    // The stage of the list that takes `queue` first.
+    static Stage consumer_of(QueueId queue);
 
-    static constexpr int kStageKernels = STAGE_ACCUMULATE + 1;
-    std::array<cl::Kernel, kStageKernels> kernels_; // one per wavefront stage, by name
+    std::array<cl::Kernel, kStageKernels> kernels_; // one per stage of the stage list, by name
     // --sort-materials only: its kernels, the key counts and the sorted queue.
     cl::Kernel count_materials_, scan_materials_, scatter_materials_;
     cl::Kernel group_; // --schedule group only

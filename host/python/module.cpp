@@ -234,6 +234,8 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("closest_rays", &RenderStats::closest_rays)
         .def_readonly("shadow_rays", &RenderStats::shadow_rays)
         .def_readonly("nonfinite_samples", &RenderStats::nonfinite_samples)
+        .def_readonly("lane_paths", &RenderStats::lane_paths, "BSDF queries answered in the group schedule's lanes")
+        .def_readonly("lane_slots", &RenderStats::lane_slots, "lanes those took, filled or not")
         .def_readonly("iterations", &RenderStats::iterations)
         .def_readonly("pool_size", &RenderStats::pool_size)
         .def_readonly("pool_bytes", &RenderStats::pool_bytes)
@@ -246,8 +248,9 @@ PYBIND11_MODULE(wavefront, m) {
                                [](const RenderStats& s) { return py::array_t<uint64_t>(s.path_lengths.size(), s.path_lengths.data()); },
                                "finished paths by bounces: bucket 0 holds 0, bucket b holds [2^(b-1), 2^b)")
         .def_property_readonly("counter_reads", &counter_reads,
-                               "one row per read of the counters: " "regenerate, extend, shadow, continue, finished "
-                               "as read, then closest rays, shadow rays and samples since the previous read")
+                               "one row per read of the counters, as counter_read_columns names them: the "
+                               "queues' lengths as read, then closest rays, shadow rays and samples since the "
+                               "previous read")
         .def_property_readonly_static("counter_read_columns", [](py::object) {
             return std::vector<std::string>(CounterSnapshot::kColumns.begin(), CounterSnapshot::kColumns.end());
         });

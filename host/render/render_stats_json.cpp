@@ -43,6 +43,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["closest_rays"] = st.closest_rays;
     j["shadow_rays"] = st.shadow_rays;
     j["nonfinite_samples"] = st.nonfinite_samples;
+    j["lanes"] = {{"paths", st.lane_paths}, {"slots", st.lane_slots}};
     j["iterations"] = st.iterations;
     j["pool_occupancy"] = st.pool_occupancy();
     j["memory"] = {{"device_bytes", s.device_bytes},

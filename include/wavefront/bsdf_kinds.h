@@ -1,5 +1,5 @@
 /* bsdf_kinds.h — the BSDF kinds: each a fixed set of lobes, shaded by code of
- * its own. The host gives every material one (host/device/bsdf_kinds.cpp),
+ * its own. The host gives every material one (host/device/bsdf_kind_choice.cpp),
  * the program compiles only the kinds the scene has (WF_HAS_BSDF_<KIND>), and
  * the shade stage dispatches on it (kernels/bsdf/kinds.h); the kinds other than
  * the general one are written once for any lane width, so the group schedule

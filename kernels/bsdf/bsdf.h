@@ -106,7 +106,7 @@
 #define WF_BSDF_H
 
 #include "wavefront/compat.h"
-#include "wavefront/path_state.h"
+#include "wavefront/techniques.h"
 #include "common/sampling.h"
 #include "bsdf/albedo.h"
 #include "bsdf/fresnel.h"

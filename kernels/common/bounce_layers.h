@@ -6,8 +6,8 @@
 #ifndef WF_BOUNCE_LAYERS_H
 #define WF_BOUNCE_LAYERS_H
 
-#include "wavefront/path_state.h"
-#include "film.h"
+#include "wavefront/render_params.h"
+#include "film_view.h"
 #include "common/film_add.h"
 #include "common/finite.h"
 

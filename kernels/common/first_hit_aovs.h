@@ -9,8 +9,8 @@
 #ifndef WF_FIRST_HIT_AOVS_H
 #define WF_FIRST_HIT_AOVS_H
 
-#include "wavefront/path_state.h"
-#include "film.h"
+#include "wavefront/render_params.h"
+#include "film_view.h"
 
 #ifndef WF_HAS_AOVS
 #define WF_HAS_AOVS 0

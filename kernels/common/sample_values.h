@@ -5,7 +5,7 @@
 #ifndef WF_SAMPLE_VALUES_H
 #define WF_SAMPLE_VALUES_H
 
-#include "wavefront/path_state.h"
+#include "wavefront/render_params.h"
 #include "common/rng.h"
 #include "common/sobol.h"
 

@@ -4,9 +4,9 @@
 #ifndef WF_CHOOSE_LIGHT_H
 #define WF_CHOOSE_LIGHT_H
 
-#include "wavefront/path_state.h"
+#include "wavefront/render_params.h"
 #include "compiled_features.h"
-#include "scene.h"
+#include "scene_view.h"
 #include "lights/light_sample.h"
 #include "lights/emissive_triangles.h"
 #include "lights/environment.h"

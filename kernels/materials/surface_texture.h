@@ -8,7 +8,7 @@
 #define WF_SURFACE_TEXTURE_H
 
 #include "compiled_features.h"
-#include "scene.h"
+#include "scene_view.h"
 #include "materials/texture.h"
 
 /* Where on a triangle, for texture lookups: its index and the barycentrics

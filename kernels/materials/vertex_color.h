@@ -9,7 +9,7 @@
 #define WF_VERTEX_COLOR_H
 
 #include "compiled_features.h"
-#include "scene.h"
+#include "scene_view.h"
 #include "materials/surface_texture.h"
 
 inline float4 surface_vertex_color(const Scene* scene, const SurfacePoint* p) {

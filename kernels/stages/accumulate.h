@@ -10,8 +10,8 @@
 #ifndef WF_STAGE_ACCUMULATE_H
 #define WF_STAGE_ACCUMULATE_H
 
-#include "path_state.h"
-#include "film.h"
+#include "path_view.h"
+#include "film_view.h"
 #include "common/finite.h"
 #include "common/film_add.h"
 

@@ -1,14 +1,14 @@
 /* generate — gives each free path slot the camera ray of its next sample.
  *
  * Each slot owns every pool-th pixel of those traced and runs through them
- * sample by sample (nth_sample, kernels/path_state.h): every sample of a pixel
+ * sample by sample (nth_sample, kernels/path_view.h): every sample of a pixel
  * is traced by the same slot, one after the other. Accumulation therefore needs no atomics and adds each pixel's samples
  * in sample order, so the image is independent of the pool size. A slot whose
  * samples are all started stays out of the queues. */
 #ifndef WF_STAGE_GENERATE_H
 #define WF_STAGE_GENERATE_H
 
-#include "path_state.h"
+#include "path_view.h"
 #include "wavefront/scene_types.h"
 #include "common/sample_values.h"
 

@@ -2,8 +2,8 @@
 #ifndef WF_STAGE_INTERSECT_H
 #define WF_STAGE_INTERSECT_H
 
-#include "path_state.h"
-#include "scene.h"
+#include "path_view.h"
+#include "scene_view.h"
 #include "geometry/bvh_traverse.h"
 
 inline void intersect_path(PathState* path, uint slot, const Scene* scene) {

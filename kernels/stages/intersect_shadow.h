@@ -4,15 +4,16 @@
 #ifndef WF_STAGE_INTERSECT_SHADOW_H
 #define WF_STAGE_INTERSECT_SHADOW_H
 
-#include "path_state.h"
-#include "scene.h"
-#include "film.h"
+#include "wavefront/stage_graph.h"
+#include "path_view.h"
+#include "scene_view.h"
+#include "film_view.h"
 #include "geometry/bvh_traverse.h"
 #include "common/bounce_layers.h"
 
 /* Traces the slot's shadow segment and adds its light if nothing blocks it;
- * returns whether the path continues after it. */
-inline bool trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+ * returns the queue the path goes to next. */
+inline uint trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                              const FilmBuffers* film) {
     const float4 light = path->shadow_radiance[slot];
     const bool occluded = bvh_any_hit(scene->nodes, scene->triangles, path->shadow_origin[slot].xyz,
@@ -22,7 +23,7 @@ inline bool trace_shadow_ray(PathState* path, const RenderParams* params, uint s
         add_to_bounce_layer(params, film, current_sample(path, params, slot).pixel, shadow_light_layer(light),
                             light.xyz);
     }
-    return shadow_then_continues(light);
+    return shadow_then_continues(light) ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
 }
 
 #endif

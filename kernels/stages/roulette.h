@@ -6,12 +6,14 @@
 #ifndef WF_STAGE_ROULETTE_H
 #define WF_STAGE_ROULETTE_H
 
-#include "path_state.h"
+#include "wavefront/stage_graph.h"
+#include "path_view.h"
 #include "common/sample_values.h"
 
-inline bool survives_roulette(PathState* path, const RenderParams* params, uint slot) {
+/* Returns the queue the path goes to next: extension if it survives. */
+inline uint roulette_path(PathState* path, const RenderParams* params, uint slot) {
     const uint depth = path_depth(path, slot);
-    if (depth < params->roulette_depth) return true;
+    if (depth < params->roulette_depth) return WF_QUEUE_EXTEND;
     const float3 throughput = path->throughput[slot].xyz;
     const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
     /* The fourth number of the BSDF group of the bounce that chose this ray;
@@ -19,9 +21,9 @@ inline bool survives_roulette(PathState* path, const RenderParams* params, uint 
      * of the direction (and of the throughput that direction gave). */
     const PathSample current = current_sample(path, params, slot);
     const float u = sample_values(params, current.pixel, current.sample, depth - 1u, WF_RNG_BSDF).w;
-    if (!(u < q)) return false;
+    if (!(u < q)) return WF_QUEUE_FINISHED;
     set_path_throughput(path, slot, throughput / q, depth);
-    return true;
+    return WF_QUEUE_EXTEND;
 }
 
 #endif

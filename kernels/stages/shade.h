@@ -14,9 +14,10 @@
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
-#include "path_state.h"
-#include "scene.h"
-#include "film.h"
+#include "wavefront/stage_graph.h"
+#include "path_view.h"
+#include "scene_view.h"
+#include "film_view.h"
 #include "common/finite.h"
 #include "common/bounce_layers.h"
 #include "common/first_hit_aovs.h"
@@ -25,10 +26,6 @@
 #include "bsdf/kinds.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
-
-#define WF_SHADE_FINISHED 0u
-#define WF_SHADE_CONTINUES 1u
-#define WF_SHADE_SHADOW_RAY 2u
 
 typedef struct SurfaceHit {
     float3 position;
@@ -185,12 +182,14 @@ inline bool shade_surface(PathState* path, const RenderParams* params, uint slot
 }
 
 /* The scatter: the shadow ray of the light sample, weighed by MIS, and the
- * continuation ray of the BSDF sample, into the path state; returns
- * WF_SHADE_* of what follows. */
+ * continuation ray of the BSDF sample, into the path state; returns the queue
+ * the path goes to next. A path with a shadow ray waits for it there
+ * (intersect_shadow sends it on), so no stage can overwrite the pending ray
+ * whatever order the scheduler launches them in. */
 inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
                           const BsdfAnswer* a) {
     const BsdfQuery* q = &c->query;
-    uint outcome = WF_SHADE_FINISHED;
+    bool shadow_ray = false, continues = false;
     float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
     if (q->light) {
         const LightSample* ls = &c->light;
@@ -207,7 +206,7 @@ inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot
                 path->shadow_segment[slot] =
                     (float4)(light_shadow_segment(ls, origin, 2.0f * params->scene_diameter), 0.0f);
                 shadow_light = contribution;
-                outcome |= WF_SHADE_SHADOW_RAY;
+                shadow_ray = true;
             }
         }
     }
@@ -222,21 +221,21 @@ inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot
             path->ray_origin[slot] =
                 (float4)(offset_ray_origin(c->position, c->position_error, c->geometric_normal, wi), 0.0f);
             path->ray_direction[slot] = (float4)(wi, bs->delta ? 0.0f : bs->pdf);
-            outcome |= WF_SHADE_CONTINUES;
+            continues = true;
         }
     }
     /* What intersect_shadow needs to send the path on: the bounce layer the
      * light joins if it arrives, and whether the path goes on after it. */
-    if (outcome & WF_SHADE_SHADOW_RAY)
-        set_shadow_light(path, slot, shadow_light, c->depth + 1u, (outcome & WF_SHADE_CONTINUES) != 0u);
-    return outcome;
+    if (shadow_ray) set_shadow_light(path, slot, shadow_light, c->depth + 1u, continues);
+    return shadow_ray ? WF_QUEUE_SHADOW : continues ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
 }
 
-/* The whole stage for one path: surface, the core at width 1, scatter. */
+/* The whole stage for one path: surface, the core at width 1, scatter;
+ * returns the queue the path goes to next. */
 inline uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                        const FilmBuffers* film) {
     ShadeContext c;
-    if (!shade_surface(path, params, slot, scene, film, &c)) return WF_SHADE_FINISHED;
+    if (!shade_surface(path, params, slot, scene, film, &c)) return WF_QUEUE_FINISHED;
     const BsdfAnswer a = bsdf_core(c.kind, &c.query);
     return shade_scatter(path, params, slot, &c, &a);
 }

@@ -9,14 +9,15 @@
  *                     work-group and key, into `sorted`, which the host
  *                     copies back over the extension queue.
  * The key is the material index + 1 (0 for a miss), modulo WF_SORT_KEYS
- * (include/wavefront/path_state.h):
+ * (wavefront/stage_graph.h):
  * materials beyond it share keys, which still groups them. The image cannot
  * change: shade's work per path does not depend on its place in the queue. */
 #ifndef WF_STAGE_SORT_BY_MATERIAL_H
 #define WF_STAGE_SORT_BY_MATERIAL_H
 
-#include "path_state.h"
-#include "scene.h"
+#include "wavefront/stage_graph.h"
+#include "path_view.h"
+#include "scene_view.h"
 
 inline uint material_key(const PathState* path, uint slot, const Scene* scene) {
     const int triangle = path_hit_triangle(path, slot);

@@ -18,7 +18,7 @@
 
 #include "device/kernel_sources.h"
 #include "support/test_support.h"
-#include "wavefront/path_state.h"
+#include "wavefront/techniques.h"
 
 namespace wf {
 namespace {

@@ -1,4 +1,4 @@
-/* film.h — the film's buffers (include/wavefront/film_buffers.h) gathered into
+/* film_view.h — the film's buffers (include/wavefront/film_buffers.h) gathered into
  * one FilmBuffers, which accumulation and the bounce layers take as one
  * argument. Device only. */
 #ifndef WF_KERNEL_FILM_H

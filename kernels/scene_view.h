@@ -1,4 +1,4 @@
-/* scene.h — the scene's buffers (include/wavefront/scene_buffers.h) gathered
+/* scene_view.h — the scene's buffers (include/wavefront/scene_buffers.h) gathered
  * into one Scene, which stage functions, light sampling, textures and the
  * BVH's hit filter take as one argument. Device only. */
 #ifndef WF_KERNEL_SCENE_H

@@ -1,4 +1,4 @@
-// bsdf_kinds.h — which BSDF kind (include/wavefront/bsdf_kinds.h) shades a
+// bsdf_kind_choice.h — which BSDF kind (include/wavefront/bsdf_kinds.h) shades a
 // material: the narrowest whose lobes cover every value its factors and
 // textures can take. A texture only scales its factor, so a factor of 0 rules
 // its lobe out at every point.

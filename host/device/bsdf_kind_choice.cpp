@@ -1,5 +1,5 @@
-// bsdf_kinds.cpp — which BSDF kind shades a material.
-#include "device/bsdf_kinds.h"
+// bsdf_kind_choice.cpp — which BSDF kind shades a material.
+#include "device/bsdf_kind_choice.h"
 
 namespace wf {
 

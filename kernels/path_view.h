@@ -1,4 +1,4 @@
-/* path_state.h — the kernels' view of the path state declared in
+/* path_view.h — the kernels' view of the path state declared in
  * include/wavefront/path_state.h: the PathState that gathers one slot array
  * per field (bound by kernel_params.h), the only code that reads or writes
  * the integer lanes packed into its float4s, and which pixel and sample a
@@ -7,6 +7,8 @@
 #define WF_KERNEL_PATH_STATE_H
 
 #include "wavefront/path_state.h"
+#include "wavefront/render_params.h"
+#include "wavefront/stage_graph.h"
 
 #define WF_PATH_MEMBER(type, name, what) __global type* name;
 typedef struct PathState {
