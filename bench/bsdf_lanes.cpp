@@ -1,56 +1,52 @@
-// bsdf_lanes.cpp — wavefront_bsdf_lanes: what shading in SIMD lanes would buy
-// on this OpenCL device (issue 16). Evaluates the same GGX metal for 4M random
-// (wo, wi) pairs with the three kernels of bsdf_lanes.cl — the renderer's
-// general BSDF, one BSDF kind without branches, and that kind in float8 lanes
-// — compares their results with the general BSDF's (the restated kinds agree
-// to the bit in f and to a few ulp in the pdf), and prints each one's rate.
-// PoCL vectorises none of them across work-items (POCL_VECTORIZER_REMARKS=1
-// says why); metal_lanes shows what explicit lanes would.
+// bsdf_lanes.cpp — wavefront_bsdf_lanes: what the BSDF kinds and their lanes
+// buy on this OpenCL device, measured on the renderer's own code
+// (kernels/bsdf/kind_probe.cl): the whole BSDF core of one shading point (the
+// BSDF at a light sample's direction, and a sampled continuation) for 4M
+// random queries on opaque materials (the Cornell box's white and a rough
+// gold), four ways: the general BSDF, and the opaque kind at widths 1, 8 and
+// 16. Prints each one's rate, and checks the lanes give width 1's bits.
 //
 // Usage: build/bench/wavefront_bsdf_lanes [--device SPEC]
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstdlib>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "device/kernel_sources.h"
 #include "device/opencl_device.h"
+#include "wavefront/techniques.h"
 
 namespace {
 
-std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+constexpr int kFields = 19, kAnswer = 12; // kind_probe.cl's probe_query fields, and answers
 
-// Unit vectors with z > 0: the upper hemisphere, where a metal reflects.
-std::vector<cl_float4> random_directions(size_t count, unsigned seed) {
-    std::mt19937 rng(seed);
+// The Cornell box's white (a rough dielectric over its base) and a rough gold
+// metal, alternately, at random wo (above the surface), wi and u.
+std::vector<float> random_queries(size_t n) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     std::normal_distribution<float> normal;
-    std::vector<cl_float4> directions(count);
-    for (cl_float4& d : directions) {
-        const float x = normal(rng), y = normal(rng), z = std::fabs(normal(rng));
-        const float length = std::sqrt(x * x + y * y + z * z);
-        d = {{x / length, y / length, z / length, 0.0f}};
+    std::vector<float> in(kFields * n);
+    auto set = [&](int field, size_t i, float v) { in[field * n + i] = v; };
+    for (size_t i = 0; i < n; ++i) {
+        const bool gold = i % 2;
+        const float base[3] = {gold ? 0.95f : 0.725f, gold ? 0.64f : 0.71f, gold ? 0.54f : 0.68f};
+        const float params[7] = {gold ? 1.0f : 0.0f, gold ? 0.5f : 1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f};
+        for (int k = 0; k < 3; ++k) set(k, i, base[k]);
+        for (int k = 0; k < 7; ++k) set(3 + k, i, params[k]); // metallic, roughness, specular, its colour, ior
+        for (int d = 0; d < 2; ++d) {
+            float v[3] = {normal(rng), normal(rng), normal(rng)};
+            const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if (d == 0) v[2] = std::fabs(v[2]);
+            for (int k = 0; k < 3; ++k) set(10 + 3 * d + k, i, v[k] / length);
+        }
+        for (int k = 0; k < 3; ++k) set(16 + k, i, u01(rng));
     }
-    return directions;
-}
-
-// How many representable floats lie between a and b (both finite, same sign or zero).
-long long ulps_apart(float a, float b) {
-    int32_t ia, ib;
-    std::memcpy(&ia, &a, sizeof ia);
-    std::memcpy(&ib, &b, sizeof ib);
-    return std::llabs(static_cast<long long>(ia) - static_cast<long long>(ib));
+    return in;
 }
 
 } // namespace
@@ -58,59 +54,53 @@ long long ulps_apart(float a, float b) {
 int main(int argc, char** argv) {
     const std::string spec = argc == 3 && std::strcmp(argv[1], "--device") == 0 ? argv[2] : "cpu";
     const wf::OpenClDevice device = wf::open_device(spec);
-    cl::Program program(device.context, read_text(WF_SOURCE_DIR "/bench/bsdf_lanes.cl"));
-    const std::string options = "-cl-std=CL1.2 -I" WF_SOURCE_DIR "/kernels -I" WF_SOURCE_DIR "/include";
-    if (program.build({device.info.device}, options.c_str()) != CL_SUCCESS) {
+    cl::Program program(device.context, wf::expand_kernel_source("bsdf/kind_probe.cl"));
+    if (program.build({device.info.device}, "-cl-std=CL1.2 -DWF_LANE_WIDTH=8") != CL_SUCCESS) {
         std::fprintf(stderr, "%s\n", program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device).c_str());
         return 1;
     }
-    const size_t pairs = size_t(1) << 22, local = 64;
-    const std::vector<cl_float4> wo = random_directions(pairs, 1), wi = random_directions(pairs, 2);
-    cl::Buffer wo_buffer(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, pairs * sizeof(cl_float4),
-                         const_cast<cl_float4*>(wo.data()));
-    cl::Buffer wi_buffer(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, pairs * sizeof(cl_float4),
-                         const_cast<cl_float4*>(wi.data()));
-    cl::Buffer out_buffer(device.context, CL_MEM_WRITE_ONLY, pairs * sizeof(cl_float4));
+    const size_t n = size_t(1) << 22, local = 64;
+    const std::vector<float> in = random_queries(n);
+    cl::Buffer input(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
+                     const_cast<float*>(in.data()));
+    cl::Buffer output(device.context, CL_MEM_WRITE_ONLY, kAnswer * n * sizeof(float));
 
-    const cl_float3 base_color = {{0.95f, 0.64f, 0.54f}}; // a rough gold-coloured metal
-    const float roughness = 0.5f;
-
-    std::printf("%s: %zu evaluations of a GGX metal, local size %zu, best of 5\n", device.info.name.c_str(), pairs,
-                local);
-    std::vector<cl_float4> reference;
+    std::printf("%s: the BSDF core (eval at the light sample + sample) of %zu queries, local size %zu, best of 5\n",
+                device.info.name.c_str(), n, local);
+    std::vector<float> width_one;
     double general_rate = 0.0;
-    for (const char* name : {"general_eval", "metal_scalar", "metal_lanes"}) {
-        const size_t per_item = std::strcmp(name, "metal_lanes") == 0 ? 8 : 1;
+    for (const auto& [name, width] : std::vector<std::pair<const char*, int>>{
+             {"general_probe", 1}, {"opaque_probe_x1", 1}, {"opaque_probe_x8", 8}, {"opaque_probe_x16", 16}}) {
         cl::Kernel kernel(program, name);
-        kernel.setArg(0, wo_buffer);
-        kernel.setArg(1, wi_buffer);
-        kernel.setArg(2, out_buffer);
-        kernel.setArg(3, base_color);
-        kernel.setArg(4, roughness);
+        kernel.setArg(0, input);
+        kernel.setArg(1, cl_uint(n));
+        kernel.setArg(2, cl_uint(WF_HEMISPHERE_COSINE));
+        kernel.setArg(3, output);
         double best = 1e30;
         for (int round = 0; round < 6; ++round) { // the first compiles the kernel
             cl::Event done;
-            device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(pairs / per_item), cl::NDRange(local),
+            device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(n / width), cl::NDRange(local),
                                               nullptr, &done);
             done.wait();
             const double seconds = (done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
                                     done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-9;
             if (round > 0) best = std::min(best, seconds);
         }
-        std::vector<cl_float4> out(pairs);
-        device.queue.enqueueReadBuffer(out_buffer, CL_TRUE, 0, pairs * sizeof(cl_float4), out.data());
-        if (reference.empty()) reference = out;
-        size_t differing = 0, nonzero = 0;
-        long long max_ulps = 0;
-        for (size_t i = 0; i < pairs; ++i) {
-            differing += std::memcmp(&out[i], &reference[i], sizeof(cl_float4)) != 0;
-            nonzero += out[i].s[3] > 0.0f;
-            for (int c = 0; c < 4; ++c) max_ulps = std::max(max_ulps, ulps_apart(out[i].s[c], reference[i].s[c]));
+        std::vector<float> out(kAnswer * n);
+        device.queue.enqueueReadBuffer(output, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+        std::string agreement;
+        if (width == 1 && std::strcmp(name, "opaque_probe_x1") == 0) width_one = out;
+        if (width > 1) { // lanes write field-major
+            size_t differing = 0;
+            for (size_t i = 0; i < n; ++i)
+                for (int k = 0; k < kAnswer; ++k)
+                    differing += std::memcmp(&out[k * n + i], &width_one[kAnswer * i + k], sizeof(float)) != 0;
+            agreement = "  " + std::to_string(differing) + " values differ from width 1's";
         }
-        const double rate = pairs / best * 1e-6;
+        const double rate = n / best * 1e-6;
         if (general_rate == 0.0) general_rate = rate;
-        std::printf("  %-13s %7.1f M evaluations/s  %5.2fx general_eval  %zu nonzero, %zu differ (at most %lld ulp)\n",
-                    name, rate, rate / general_rate, nonzero, differing, max_ulps);
+        std::printf("  %-17s %7.1f M queries/s  %5.2fx the general BSDF%s\n", name, rate, rate / general_rate,
+                    agreement.c_str());
     }
     return 0;
 }

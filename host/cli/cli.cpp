@@ -57,6 +57,19 @@ CLI::Validator finite_number(bool positive) {
         positive ? "> 0" : "");
 }
 
+// A probability above zero: a number in (0, 1].
+CLI::Validator probability_above_zero() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            std::istringstream in(text);
+            double value = 0.0;
+            if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
+            if (!(value > 0.0 && value <= 1.0)) return text + " is not in (0, 1]";
+            return "";
+        },
+        "in (0, 1]");
+}
+
 // The names of a choice (render_settings.h) as CLI11's list of allowed values.
 std::vector<std::string> names_of(const ChoiceNames& names) {
     std::vector<std::string> list;
@@ -147,6 +160,13 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--max-depth", s.max_depth,
                       with_default("Bounces per path; 1 is direct lighting only", "unlimited, ended by roulette"))
         ->check(whole_number(0, 1u << 20));
+    render.add_option("--roulette-depth", s.roulette_depth,
+                      with_default("Bounces after which Russian roulette may end a path", s.roulette_depth))
+        ->check(whole_number(1, 1u << 20));
+    render.add_option("--roulette-cap", s.roulette_cap,
+                      with_default("The largest probability with which roulette lets a path go on (Mitsuba: 0.95)",
+                                   s.roulette_cap))
+        ->check(probability_above_zero());
     render.add_option("--seed", s.seed, with_default("Random seed; the same seed and device give the same bytes", s.seed))
         ->check(whole_number(0, UINT32_MAX));
     render.add_option("--device", o.device,

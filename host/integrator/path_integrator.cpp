@@ -106,6 +106,7 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
     params_.max_depth = settings.max_depth;
     params_.seed = settings.seed;
     params_.roulette_depth = settings.roulette_depth;
+    params_.roulette_cap = settings.roulette_cap;
     params_.light_count = scene.light_count;
     params_.light_sampling = settings.light_sampling;
     params_.hemisphere = settings.hemisphere;

@@ -66,7 +66,8 @@ struct RenderSettings {
     uint32_t max_depth = WF_UNLIMITED_DEPTH;
     uint32_t seed = 0;
     uint32_t pool_size = 0; // 0: chosen from the image and the device (render/device_renderer.h)
-    uint32_t roulette_depth = 3;
+    uint32_t roulette_depth = 3; // first bounce count at which roulette may end a path
+    float roulette_cap = 1.0f;   // the largest survival probability (kernels/stages/roulette.h)
     uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
     uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
     uint32_t hemisphere = WF_HEMISPHERE_COSINE;

@@ -29,6 +29,7 @@
     X(RenderParams, pixel_count) X(RenderParams, first_pixel) X(RenderParams, traced_pixels)     \
     X(RenderParams, pool_size) X(RenderParams, spp)                                              \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
+    X(RenderParams, roulette_cap)                                                                 \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \
     X(RenderParams, sampler) X(RenderParams, bounce_layers) X(RenderParams, environment_light)     \
     X(RenderParams, scene_diameter) X(RenderParams, aovs) X(RenderParams, environment)            \

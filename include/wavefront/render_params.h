@@ -18,6 +18,7 @@ typedef struct RenderParams {
     uint32_t max_depth;      /* bounces; WF_UNLIMITED_DEPTH = ended by roulette alone */
     uint32_t seed;
     uint32_t roulette_depth; /* first depth at which roulette may end a path */
+    float roulette_cap;      /* the most a path's survival probability may be: 1 keeps q = max throughput */
     uint32_t light_count;    /* entries in the light table */
     uint32_t light_sampling; /* WF_LIGHT_SAMPLING_* */
     uint32_t hemisphere;     /* WF_HEMISPHERE_* */

@@ -1,8 +1,10 @@
 /* roulette — ends paths whose throughput has become small, without bias.
  *
  * From params.roulette_depth bounces on, a path survives with probability
- * q = min(1, max component of its throughput) and its throughput is divided by
- * q; survivors return to the extension queue, the rest are finished. */
+ * q = min(roulette_cap, max component of its throughput) and its throughput is
+ * divided by q; survivors return to the extension queue, the rest are
+ * finished. A cap below 1 (Mitsuba's 0.95) also ends paths that lose nothing,
+ * such as light trapped in glass by total internal reflection. */
 #ifndef WF_STAGE_ROULETTE_H
 #define WF_STAGE_ROULETTE_H
 
@@ -15,7 +17,7 @@ inline uint roulette_path(PathState* path, const RenderParams* params, uint slot
     const uint depth = path_depth(path, slot);
     if (depth < params->roulette_depth) return WF_QUEUE_EXTEND;
     const float3 throughput = path->throughput[slot].xyz;
-    const float q = min(1.0f, max(throughput.x, max(throughput.y, throughput.z)));
+    const float q = min(params->roulette_cap, max(throughput.x, max(throughput.y, throughput.z)));
     /* The fourth number of the BSDF group of the bounce that chose this ray;
      * bsdf_sample uses the first three, so the choice to go on is independent
      * of the direction (and of the throughput that direction gave). */

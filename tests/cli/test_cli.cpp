@@ -122,6 +122,9 @@ TEST_F(Cli, BadFlagsAreRejectedByName) {
     expect_rejected("render " + kCornell + " --spp=abc", "--spp: 'abc'"); // --opt=value reads the same
     expect_rejected("render " + kCornell + " --width -5", "--width: '-5'");
     expect_rejected("render " + kCornell + " --width 100000 --height 100000", "--width: 100000");
+    expect_rejected("render " + kCornell + " --roulette-cap 0", "--roulette-cap: 0 is not in (0, 1]");
+    expect_rejected("render " + kCornell + " --roulette-cap 1.5", "--roulette-cap: 1.5 is not in (0, 1]");
+    expect_rejected("render " + kCornell + " --lane-width 4", "--lane-width: 4");
     expect_rejected("render " + kCornell + " --frobnicate", "frobnicate");
     expect_rejected("render", "no scene file");
     expect_rejected("paint " + kCornell, "unknown command 'paint'");

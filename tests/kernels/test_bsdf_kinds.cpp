@@ -23,85 +23,14 @@
 namespace wf {
 namespace {
 
-// The inputs, a structure of arrays: each field's n values in turn.
+// The inputs, a structure of arrays: each field's n values in turn
+// (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
              WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, FIELD_COUNT };
 // The answers per item: f at wi (3), its pdf, the sample's wi (3), f (3), pdf, delta.
 constexpr int kAnswer = 12;
 
-const char* kProbe = R"CLC(
-#define IN(field) in[(field) * n + i]
-inline BsdfQuery probe_query(__global const float* in, uint n, uint i, uint hemisphere) {
-    BsdfQuery q;
-    q.params.base_color = (float3)(IN(0), IN(1), IN(2));
-    q.params.metallic = IN(3);
-    q.params.roughness = IN(4);
-    q.params.transmission = 0.0f;
-    q.params.ior = IN(9);
-    q.params.specular = IN(5);
-    q.params.specular_color = (float3)(IN(6), IN(7), IN(8));
-    q.params.thin_walled = 0u;
-    q.params.clearcoat = 0.0f;
-    q.params.clearcoat_roughness = 0.0f;
-    q.params.sheen_color = (float3)(0.0f);
-    q.params.sheen_roughness = 0.0f;
-    q.params.hemisphere = hemisphere;
-    q.wo = (float3)(IN(10), IN(11), IN(12));
-    q.wi_light = (float3)(IN(13), IN(14), IN(15));
-    q.u = (float3)(IN(16), IN(17), IN(18));
-    q.light = true;
-    return q;
-}
 
-inline void store_answer(__global float* o, BsdfAnswer a) {
-    const float v[12] = {a.f_light.x, a.f_light.y, a.f_light.z, a.pdf_light, a.sample.wi.x, a.sample.wi.y,
-                         a.sample.wi.z, a.sample.f.x, a.sample.f.y, a.sample.f.z, a.sample.pdf, (float)a.sample.delta};
-    for (int k = 0; k < 12; ++k) o[k] = v[k];
-}
-
-__kernel void general_probe(__global const float* in, uint n, uint hemisphere, __global float* out) {
-    const uint i = get_global_id(0);
-    const BsdfQuery q = probe_query(in, n, i, hemisphere);
-    store_answer(out + 12 * i, general_core(&q));
-}
-
-__kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere, __global float* out) {
-    const uint i = get_global_id(0);
-    const BsdfQuery q = probe_query(in, n, i, hemisphere);
-    store_answer(out + 12 * i, opaque_core_x1(&q));
-}
-
-/* WF_W items a work-item, from the same arrays. */
-#define LANE_PROBE(W)                                                                                         \
-    __kernel void opaque_probe_x##W(__global const float* in, uint n, uint hemisphere, __global float* out) { \
-        const uint i = get_global_id(0);                                                                      \
-        OpaqueParams_x##W p;                                                                                  \
-        p.base_color.r = vload##W(i, in + 0 * n);                                                             \
-        p.base_color.g = vload##W(i, in + 1 * n);                                                             \
-        p.base_color.b = vload##W(i, in + 2 * n);                                                             \
-        p.metallic = vload##W(i, in + 3 * n);                                                                 \
-        p.roughness = vload##W(i, in + 4 * n);                                                                \
-        p.specular = vload##W(i, in + 5 * n);                                                                 \
-        p.specular_color.r = vload##W(i, in + 6 * n);                                                         \
-        p.specular_color.g = vload##W(i, in + 7 * n);                                                         \
-        p.specular_color.b = vload##W(i, in + 8 * n);                                                         \
-        p.ior = vload##W(i, in + 9 * n);                                                                      \
-        lvec##W wo, wi, u, sampled;                                                                           \
-        wo.x = vload##W(i, in + 10 * n), wo.y = vload##W(i, in + 11 * n), wo.z = vload##W(i, in + 12 * n);    \
-        wi.x = vload##W(i, in + 13 * n), wi.y = vload##W(i, in + 14 * n), wi.z = vload##W(i, in + 15 * n);    \
-        u.x = vload##W(i, in + 16 * n), u.y = vload##W(i, in + 17 * n), u.z = vload##W(i, in + 18 * n);       \
-        const OpaqueAtWo_x##W at = opaque_at_wo_x##W(&p, wo);                                                 \
-        lreal##W pdf_light, pdf;                                                                              \
-        lint##W delta;                                                                                        \
-        const lrgb##W f_light = opaque_eval_pdf_x##W(&p, &at, wo, wi, hemisphere, &pdf_light);                \
-        const lrgb##W f = opaque_sample_x##W(&p, &at, wo, u, hemisphere, &sampled, &pdf, &delta);             \
-        const lreal##W v[12] = {f_light.r, f_light.g, f_light.b, pdf_light, sampled.x, sampled.y,            \
-                                sampled.z, f.r, f.g, f.b, pdf, convert_float##W(-delta)};                    \
-        for (int k = 0; k < 12; ++k) vstore##W(v[k], i, out + k * n); /* answer-major */                    \
-    }
-LANE_PROBE(8)
-LANE_PROBE(16)
-)CLC";
 
 struct Items {
     std::vector<float> in; // FIELD_COUNT x n
@@ -161,11 +90,7 @@ std::vector<float> run_probe(const cl::Program& program, const char* name, const
 }
 
 cl::Program probe_program() {
-    // Widths 1 and 8 through kinds.h, as the group schedule's program has them; 16 expanded here.
-    const std::string source = "#define WF_LANE_WIDTH 8\n" + expand_kernel_source("bsdf/kinds.h") +
-                               "#define WF_W 16\n" + expand_kernel_source("lanes/lane_width.inc") +
-                               expand_kernel_source("bsdf/kinds/opaque.inc") + "#undef WF_W\n" + kProbe;
-    return test::build_test_program(source);
+    return test::build_test_program(expand_kernel_source("bsdf/kind_probe.cl"), "-DWF_LANE_WIDTH=8");
 }
 
 TEST_P(BsdfKinds, OpaqueMatchesTheGeneralBsdf) {
