@@ -204,8 +204,8 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--local-size", s.local_size, with_default("Work-items per work-group", s.local_size))
         ->check(whole_number(16, 1024));
     render.add_option("--lane-width", s.lane_width,
-                      with_default("Paths a work-item in the group schedule's BSDF lanes: 1, 8 or 16, or 0 for "
-                                   "the device's float vector width; the same image", s.lane_width))
+                      with_default("Paths a work-item in the group schedule's BSDF lanes: 1, 8 or 16, or 0 for 8 "
+                                   "on a CPU of 8-float vectors or wider (1 elsewhere); the same image", s.lane_width))
         ->check(CLI::IsMember({0u, 1u, 8u, 16u}));
     render.add_option("--stats-json", o.stats_json,
                       with_default("Write the render's statistics as JSON: stage times, rays, counters per iteration",

@@ -81,8 +81,8 @@ struct RenderSettings {
     QueuePush queue_push = QueuePush::Group;
     bool sort_materials = false; // reorder the extension queue by material before shade
     // The group schedule's BSDF lanes (kernels/bsdf/kind_lanes.h): 1 (none), 8
-    // or 16 paths a work-item; 0: the device's native float vector width. The
-    // same bytes at every width.
+    // or 16 paths a work-item; 0: 8 on a device of 8-float vectors or wider,
+    // else 1 (render/device_renderer.cpp). The same bytes at every width.
     uint32_t lane_width = 0;
     // While it holds non-zero, no sample starts: the paths in flight end and
     // the round returns early, each slot's pixels then one sample apart at most.

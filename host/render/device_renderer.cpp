@@ -36,12 +36,14 @@ Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) 
                                                : settings.schedule;
 }
 
-// The group schedule's lanes: as asked, or the device's native float vector
-// width, 8 or 16 (AVX2, AVX-512); 1 (no lanes) on devices of narrower vectors,
-// GPUs among them, whose work-items are lanes already.
+// The group schedule's lanes: as asked, else 8 where the device's vectors hold
+// 8 floats or more (AVX2, AVX-512), and 1 (no lanes) on devices of narrower
+// vectors, GPUs among them, whose work-items are lanes already. Not 16 on
+// AVX-512: on the Cornell box 16 lanes ran 0.88-0.90x the speed of 8, with
+// 67% of them filled against 82% (bench/results/shading-lanes.md).
 unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings) {
     if (settings.lane_width != 0) return settings.lane_width;
-    return device.native_float_width >= 16 ? 16u : device.native_float_width >= 8 ? 8u : 1u;
+    return device.native_float_width >= 8 ? 8u : 1u;
 }
 
 } // namespace

@@ -18,8 +18,8 @@
 #include "lanes/lane_width.inc"
 #include "bsdf/kinds/opaque.inc"
 #undef WF_W
-/* The group schedule's lanes: the host sets WF_LANE_WIDTH from the device's
- * native float vector width (8 for AVX2, 16 for AVX-512). */
+/* The group schedule's lanes: the host sets WF_LANE_WIDTH (8 on CPUs of
+ * 8-float vectors or wider, or --lane-width). */
 #if defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"

@@ -4,13 +4,19 @@
  * if the scene has one, and ends the path; a hit on an emitter adds its
  * radiance; then, unless the path has reached --max-depth, one light sample is
  * prepared for intersect_shadow (next-event estimation, over every kind of
- * light) and the material's BSDF (bsdf/bsdf.h) chooses the continuation ray,
- * which roulette may end. --light-sampling decides which of the two
+ * light) and the material's BSDF (its kind's, bsdf/kinds.h) chooses the
+ * continuation ray, which roulette may end. --light-sampling decides which of the two
  * techniques counts emitted light: BRDF sampling alone, NEE alone, or both
  * weighted by the power heuristic (MIS), so that no light is counted twice.
  * Delta lights are found by NEE alone, whatever the technique; a Dirac lobe
  * (mirror, smooth glass) takes no light sample and passes pdf 0 on, so the
- * emission its ray finds is counted whole. */
+ * emission its ray finds is counted whole.
+ *
+ * In three steps, so that the group schedule can run the middle one in SIMD
+ * lanes (bsdf/kind_lanes.h): shade_surface (the above up to a BsdfQuery),
+ * the BSDF core (the BSDF at the light sample, and a sample), shade_scatter
+ * (the shadow and continuation rays, and the next queue). shade_path runs the
+ * three for one path, with the core at width 1. */
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
