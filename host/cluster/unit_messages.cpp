@@ -20,6 +20,8 @@ UnitCounts to_wire(const RenderStats& c, double transfer_seconds, double unit_se
     w.closest_rays = c.closest_rays;
     w.shadow_rays = c.shadow_rays;
     w.nonfinite_samples = c.nonfinite_samples;
+    w.lane_paths = c.lane_paths;
+    w.lane_slots = c.lane_slots;
     w.iterations = c.iterations;
     w.pool_bytes = c.pool_bytes;
     w.pool_size = c.pool_size;
@@ -40,6 +42,8 @@ RenderStats from_wire(const UnitCounts& w) {
     c.closest_rays = w.closest_rays;
     c.shadow_rays = w.shadow_rays;
     c.nonfinite_samples = w.nonfinite_samples;
+    c.lane_paths = w.lane_paths;
+    c.lane_slots = w.lane_slots;
     c.iterations = w.iterations;
     c.pool_bytes = w.pool_bytes;
     c.pool_size = w.pool_size;

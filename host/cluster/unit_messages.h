@@ -36,7 +36,7 @@ struct UnitReplyStatus {
 
 // A device's counts so far as they travel, with the time its last unit took there.
 struct UnitCounts {
-    uint64_t samples, closest_rays, shadow_rays, nonfinite_samples, iterations, pool_bytes;
+    uint64_t samples, closest_rays, shadow_rays, nonfinite_samples, lane_paths, lane_slots, iterations, pool_bytes;
     uint32_t pool_size, pad;
     double seconds, transfer_seconds, unit_seconds;
     double stage_seconds[STAGE_COUNT];
