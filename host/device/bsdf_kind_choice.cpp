@@ -9,11 +9,4 @@ uint32_t bsdf_kind_of(const SceneMaterial& m) {
     return WF_BSDF_OPAQUE;
 }
 
-const char* bsdf_kind_name(uint32_t kind) {
-#define WF_BSDF_KIND_NAME(id, name, what) name,
-    static constexpr const char* kNames[WF_BSDF_KIND_COUNT] = {WF_BSDF_KINDS(WF_BSDF_KIND_NAME)};
-#undef WF_BSDF_KIND_NAME
-    return kind < WF_BSDF_KIND_COUNT ? kNames[kind] : "unknown";
-}
-
 } // namespace wf

@@ -13,7 +13,4 @@ namespace wf {
 
 uint32_t bsdf_kind_of(const SceneMaterial& m);
 
-// The kind's name, as the report and the program's defines spell it.
-const char* bsdf_kind_name(uint32_t kind);
-
 } // namespace wf
