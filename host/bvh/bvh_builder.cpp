@@ -32,6 +32,7 @@
 #include <utility>
 
 #include "bvh/binary_bvh.h"
+#include "bvh/leaf_blocks.h"
 #include "geometry/bvh_traverse.h"
 
 namespace wf {
@@ -77,6 +78,7 @@ public:
         bvh_.nodes.emplace_back();
         fill(0, {0u}, WF_BVH_STACK_SIZE, 1);
         bvh_.order = std::move(binary_.order);
+        place_leaves_in_blocks(bvh_);
         return std::move(bvh_);
     }
 

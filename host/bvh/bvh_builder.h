@@ -5,7 +5,8 @@
 //
 // Promises: node 0 has one slot, the scene's box over the top of the tree;
 // every other node is the child of exactly one node before it; every triangle
-// in exactly one leaf, a run of one to eight consecutive BVH positions; every
+// in exactly one leaf, a run of one to eight consecutive BVH positions, placed
+// in blocks of four as host/bvh/leaf_blocks.h says; every
 // child box holding its children's boxes and its triangles' corners, and every
 // unused slot's box empty, its child word 0; traversal's stack never fuller
 // than WF_BVH_STACK_SIZE. Deterministic.
@@ -20,9 +21,12 @@
 
 namespace wf {
 
+// The mark in Bvh::order of a block's lane that no leaf uses.
+constexpr uint32_t kNoTriangle = 0xffffffffu;
+
 struct Bvh {
     std::vector<BvhNode> nodes;  // node 0 holds the scene's box over the top of the tree
-    std::vector<uint32_t> order; // order[i] = index of the scene triangle placed at BVH position i
+    std::vector<uint32_t> order; // order[i] = the scene triangle at BVH position i, or kNoTriangle
     int depth = 0;               // deepest level of nodes (root = 1)
 };
 

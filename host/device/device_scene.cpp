@@ -66,8 +66,8 @@ double environment_power(const EnvironmentMap& map, double scene_radius) {
 DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     DeviceSceneData d;
     d.nodes = bvh.nodes;
-    const size_t n = bvh.order.size();
-    d.triangles.resize(n);
+    const size_t n = bvh.order.size(); // a multiple of WF_BLOCK_LANES
+    d.triangles.resize(n / WF_BLOCK_LANES);
     d.normals.resize(n);
     std::vector<double> light_weights;
     const auto add_light = [&](uint32_t kind, uint32_t index, double power) {
@@ -75,22 +75,24 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         light_weights.push_back(power);
     };
     for (size_t i = 0; i < n; ++i) {
-        const uint32_t t = bvh.order[i];
-        Triangle& tri = d.triangles[i];
-        store3(tri.v0, scene.positions[3 * t]);
-        store3(tri.v1, scene.positions[3 * t + 1]);
-        store3(tri.v2, scene.positions[3 * t + 2]);
-        tri.material = scene.triangle_material[t];
-        tri.mesh = scene.triangle_mesh[t];
-        tri.light = -1;
+        TriangleBlock& block = d.triangles[i / WF_BLOCK_LANES];
+        const size_t lane = i % WF_BLOCK_LANES;
+        // A lane no leaf uses repeats lane 0, always a triangle, so that its
+        // arithmetic in the leaf test stays that of a real triangle.
+        const uint32_t t = bvh.order[i] != kNoTriangle ? bvh.order[i] : bvh.order[i - lane];
+        for (size_t c = 0; c < 3; ++c)
+            for (int axis = 0; axis < 3; ++axis) block.corners[3 * c + axis][lane] = scene.positions[3 * t + c][axis];
+        block.light[lane] = -1;
+        block.material[lane] = scene.triangle_material[t];
+        d.normals[i] = TriangleNormals{};
+        if (bvh.order[i] == kNoTriangle) continue;
         TriangleNormals& nrm = d.normals[i];
-        nrm = TriangleNormals{};
         store3(nrm.n0, scene.normals[3 * t]);
         store3(nrm.n1, scene.normals[3 * t + 1]);
         store3(nrm.n2, scene.normals[3 * t + 2]);
         const double power = triangle_power(scene, t);
         if (power > 0.0) {
-            tri.light = static_cast<int32_t>(d.lights.size());
+            block.light[lane] = static_cast<int32_t>(d.lights.size());
             add_light(WF_LIGHT_TRIANGLE, static_cast<uint32_t>(i), power);
         }
     }

@@ -19,6 +19,11 @@ void add_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_
         for (const uint32_t t : triangle_order) {
             TriangleTexcoords tc{};
             TriangleTangents tg{};
+            if (t == kNoTriangle) { // a lane no leaf uses: never read
+                d.texcoords.push_back(tc);
+                d.tangents.push_back(tg);
+                continue;
+            }
             float* tangents[3] = {tg.t0, tg.t1, tg.t2};
             for (size_t k = 0; k < 3; ++k) {
                 corner_uv(scene.uv0, 3 * t + k, tc.uv0 + 2 * k);
@@ -34,6 +39,10 @@ void add_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_
     if (scene.has_vertex_colors())
         for (const uint32_t t : triangle_order) {
             TriangleColors c{};
+            if (t == kNoTriangle) {
+                d.colors.push_back(c);
+                continue;
+            }
             float* corners[3] = {c.c0, c.c1, c.c2};
             for (size_t k = 0; k < 3; ++k)
                 for (int i = 0; i < 4; ++i) corners[k][i] = scene.colors[3 * t + k][i];

@@ -6,14 +6,13 @@
 #define WAVEFRONT_LAYOUT_FIELDS_H
 
 #define WF_LAYOUT_STRUCTS(X) \
-    X(BvhNode) X(Triangle) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
+    X(BvhNode) X(TriangleBlock) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
     X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)  \
     X(TriangleTexcoords) X(TriangleTangents) X(TriangleColors)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, bounds) X(BvhNode, child)                                                           \
-    X(Triangle, v0) X(Triangle, material) X(Triangle, v1) X(Triangle, light) X(Triangle, v2)      \
-    X(Triangle, mesh)                                                                             \
+    X(TriangleBlock, corners) X(TriangleBlock, light) X(TriangleBlock, material) X(TriangleBlock, pad) \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
     X(TriangleTexcoords, uv0) X(TriangleTexcoords, uv1)                                           \
     X(TriangleTangents, t0) X(TriangleTangents, t1) X(TriangleTangents, t2)                       \

@@ -16,9 +16,9 @@
  * y, lower z, upper z. An unused slot has an empty box (lower +inf, upper
  * -inf), which no ray meets, and a child word of 0. A child word is an
  * interior node's index (never 0: node 0 is no one's child), or for a leaf
- * WF_BVH_LEAF | (count - 1) << WF_BVH_COUNT_SHIFT | first: the triangles
- * [first, first + count) of the Triangle buffer (BVH order), count from 1 to
- * 8, tested four at a time in float4 lanes. */
+ * WF_BVH_LEAF | (count - 1) << WF_BVH_COUNT_SHIFT | first: the triangles at
+ * BVH positions [first, first + count), count from 1 to 8. A leaf of four or
+ * more starts a TriangleBlock; a smaller one lies within one. */
 #define WF_BVH_WIDTH 8
 #define WF_BVH_LEAF 0x80000000u
 #define WF_BVH_COUNT_SHIFT 28
@@ -28,16 +28,19 @@ typedef struct BvhNode {
     uint32_t child[WF_BVH_WIDTH];
 } BvhNode;
 
-/* A triangle's corners in world space, in BVH order. The fourth word of each
- * row carries what closest-hit shading needs next. */
-typedef struct Triangle {
-    float v0[3];
-    uint32_t material;
-    float v1[3];
-    int32_t light; /* index into the light table, or -1 when not emissive */
-    float v2[3];
-    uint32_t mesh; /* index of the glTF mesh it came from, for messages */
-} Triangle;
+/* Four triangles side by side, BVH positions 4b to 4b + 3 in block b, a lane
+ * each (kernels/geometry/triangle_blocks.h reads one triangle back). corners
+ * row 3c + axis holds corner c's x, y or z of the four, so a ray's leaf test
+ * loads its permuted corners as nine float4 rows, as the node test loads its
+ * boxes. Then what a hit needs next. 192 bytes: three cache lines. A lane no
+ * leaf uses repeats lane 0's corners, has light -1, and is never reported. */
+#define WF_BLOCK_LANES 4
+typedef struct TriangleBlock {
+    float corners[9][WF_BLOCK_LANES];
+    int32_t light[WF_BLOCK_LANES]; /* index into the light table, or -1 when not emissive */
+    uint32_t material[WF_BLOCK_LANES];
+    uint32_t pad[WF_BLOCK_LANES]; /* to three whole cache lines */
+} TriangleBlock;
 
 /* Per-corner shading normals (the geometric normal where the file has none). */
 typedef struct TriangleNormals {
@@ -50,7 +53,7 @@ typedef struct TriangleNormals {
 } TriangleNormals;
 
 /* Per-corner texture coordinates and tangents, in BVH order beside the
- * Triangle buffer; only scenes with textures upload them. A tangent's w is the
+ * triangle blocks; only scenes with textures upload them. A tangent's w is the
  * handedness: bitangent = cross(n, t) w. */
 typedef struct TriangleTexcoords {
     float uv0[6]; /* TEXCOORD_0 of corners 0, 1, 2 */
@@ -63,7 +66,7 @@ typedef struct TriangleTangents {
     float t2[4];
 } TriangleTangents;
 
-/* Per-corner COLOR_0 (linear RGBA), in BVH order beside the Triangle buffer;
+/* Per-corner COLOR_0 (linear RGBA), in BVH order beside the triangle blocks;
  * only scenes whose vertex colours are not all white upload them. */
 typedef struct TriangleColors {
     float c0[4];
@@ -165,7 +168,7 @@ typedef struct MaterialTextureParams {
 typedef struct LightEntry {
     float probability; /* keep this entry with this probability, else take alias */
     uint32_t alias;
-    uint32_t index;    /* into the Triangle or PunctualLight buffer, by kind */
+    uint32_t index;    /* a BVH position or a PunctualLight, by kind */
     float pmf;         /* probability that this entry's light is chosen */
     uint32_t kind;     /* WF_LIGHT_* */
     uint32_t pad[3];

@@ -14,7 +14,7 @@
  * in front of it. A hit's exact t lies within t_error of its t, so the t of
  * two hits on one plane differ by at most the sum of their bounds. The window
  * of doubt ends at the least t + 2 t_error over all hits, and the closest
- * emitter hit (Triangle.light >= 0) inside it wins over the closest hit. So a
+ * emitter hit (a light entry >= 0) inside it wins over the closest hit. So a
  * light exactly coplanar with the surface it is set in is found wherever its
  * bound is no larger than the surface's, and in practice everywhere, since the
  * bounds are conservative several times over (tests/render/test_coplanar.cpp checks
@@ -57,9 +57,11 @@
  * choose them), so an unused slot's empty box of infinities is simply missed.
  * Node 0 has one slot, the scene's box (whence the pad) over the top of the
  * tree, where traversal starts. A leaf is a run of up to eight consecutive
- * triangles of the Triangle buffer, gathered four at a time into float4 lanes
- * for the triangle test (geometry/triangle_intersect.h); traversal keeps no
- * copy of the triangles.
+ * BVH positions in one or two TriangleBlocks (host/bvh/leaf_blocks.h): the
+ * triangle test (geometry/triangle_intersect.h) takes a block's four lanes at
+ * once, its corners loaded as rows chosen for the ray as the box rows are, and
+ * reports only the lanes of the leaf; traversal keeps no copy of the
+ * triangles.
  *
  * Order of visits: a visit that meets one child goes straight on to it; one
  * that meets several pushes them all, sorted so that the nearest is on top
@@ -80,6 +82,7 @@
 #include "wavefront/compat.h"
 #include "wavefront/scene_types.h"
 #include "geometry/triangle_intersect.h"
+#include "geometry/triangle_blocks.h"
 
 #ifdef __OPENCL_C_VERSION__
 #include "materials/alpha_mask.h"
@@ -214,37 +217,36 @@ WF_INLINE RayHit selected_hit(const HitSelection* s) {
     return s->emitter.triangle >= 0 && s->emitter.t <= s->window_end ? s->emitter : s->closest;
 }
 
-/* One corner of four triangles, permuted for the ray as the test wants it. */
-WF_FORCE_INLINE CornerLanes corner_lanes(const WatertightRay* ray, WF_GLOBAL const float* p0,
-                                         WF_GLOBAL const float* p1, WF_GLOBAL const float* p2,
-                                         WF_GLOBAL const float* p3) {
-    CornerLanes c;
-    c.x = make_float4(p0[ray->kx], p1[ray->kx], p2[ray->kx], p3[ray->kx]);
-    c.y = make_float4(p0[ray->ky], p1[ray->ky], p2[ray->ky], p3[ray->ky]);
-    c.z = make_float4(p0[ray->kz], p1[ray->kz], p2[ray->kz], p3[ray->kz]);
-    return c;
-}
-
-/* A leaf's triangles in float4 lanes; lanes past its count repeat its last
- * triangle, which changes no answer. */
-WF_FORCE_INLINE TriangleLanes leaf_triangles(const WatertightRay* ray, WF_GLOBAL const Triangle* triangles,
-                                             uint32_t first, uint32_t count) {
-    WF_GLOBAL const Triangle* t0 = triangles + first;
-    WF_GLOBAL const Triangle* t1 = triangles + first + (count > 1u ? 1u : 0u);
-    WF_GLOBAL const Triangle* t2 = triangles + first + (count > 2u ? 2u : count - 1u);
-    WF_GLOBAL const Triangle* t3 = triangles + first + (count - 1u);
+/* A block's four triangles in float4 lanes, each corner permuted for the ray
+ * as the test wants it: a row a coordinate, chosen as the box test chooses
+ * its planes. */
+WF_FORCE_INLINE TriangleLanes block_lanes(const WatertightRay* ray, WF_GLOBAL const TriangleBlock* block) {
     TriangleLanes lanes;
-    lanes.v0 = corner_lanes(ray, t0->v0, t1->v0, t2->v0, t3->v0);
-    lanes.v1 = corner_lanes(ray, t0->v1, t1->v1, t2->v1, t3->v1);
-    lanes.v2 = corner_lanes(ray, t0->v2, t1->v2, t2->v2, t3->v2);
+    lanes.v0.x = vload4(0, block->corners[ray->kx]);
+    lanes.v0.y = vload4(0, block->corners[ray->ky]);
+    lanes.v0.z = vload4(0, block->corners[ray->kz]);
+    lanes.v1.x = vload4(0, block->corners[3 + ray->kx]);
+    lanes.v1.y = vload4(0, block->corners[3 + ray->ky]);
+    lanes.v1.z = vload4(0, block->corners[3 + ray->kz]);
+    lanes.v2.x = vload4(0, block->corners[6 + ray->kx]);
+    lanes.v2.y = vload4(0, block->corners[6 + ray->ky]);
+    lanes.v2.z = vload4(0, block->corners[6 + ray->kz]);
     return lanes;
 }
 
+/* The lanes of block `block` that hold positions [first, end), as bit i for lane i. */
+WF_FORCE_INLINE uint32_t lanes_in_range(uint32_t block, uint32_t first, uint32_t end) {
+    const uint32_t base = block * WF_BLOCK_LANES;
+    const uint32_t lo = first > base ? first - base : 0u;
+    const uint32_t hi = end - base < WF_BLOCK_LANES ? end - base : WF_BLOCK_LANES;
+    return ((1u << hi) - 1u) & ~((1u << lo) - 1u);
+}
+
 /* A pushed child is met later: its memory can be on its way meanwhile. */
-WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
+WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* blocks,
                                     uint32_t child) {
     WF_GLOBAL const char* p = (child & WF_BVH_LEAF)
-                                  ? (WF_GLOBAL const char*)(triangles + (child & WF_BVH_FIRST_MASK))
+                                  ? (WF_GLOBAL const char*)block_of(blocks, child & WF_BVH_FIRST_MASK)
                                   : (WF_GLOBAL const char*)(nodes + child);
     WF_PREFETCH(p);
     WF_PREFETCH(p + 64);
@@ -256,7 +258,7 @@ WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u
 
 /* The selected hit in (0, t_max), or the first one found when
  * stop_at_first_hit is set. */
-WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
+WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                               float3 origin, float3 direction, float t_max,
                               int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     const WatertightRay ray = watertight_ray(origin, direction);
@@ -271,19 +273,20 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     uint32_t child = nodes->child[0];
     for (;;) {
         if (child & WF_BVH_LEAF) {
-            const uint32_t count = ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
-            for (uint32_t group = 0; group < count; group += 4u) { /* four triangles at a time */
-                const uint32_t first = (child & WF_BVH_FIRST_MASK) + group;
-                const uint32_t in_group = count - group < 4u ? count - group : 4u;
-                const TriangleLanes lanes = leaf_triangles(&ray, triangles, first, in_group);
-                TriangleHit hits[4];
-                uint32_t found = intersect_triangles(&ray, &lanes, t_max, selection.window_end, hits);
-                found &= (1u << in_group) - 1u; /* not the repeated lanes */
+            /* One or two blocks, four triangles at a time. */
+            const uint32_t first = child & WF_BVH_FIRST_MASK;
+            const uint32_t end = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
+            for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
+                WF_GLOBAL const TriangleBlock* b = triangles + block;
+                const TriangleLanes lanes = block_lanes(&ray, b);
+                TriangleHit hits[WF_BLOCK_LANES];
+                uint32_t found = intersect_triangles(&ray, &lanes, lanes_in_range(block, first, end), t_max,
+                                                     selection.window_end, hits);
                 for (; found != 0u; found &= found - 1u) {
                     const uint32_t lane = lowest_bit(found);
-                    const int32_t index = (int32_t)(first + lane);
+                    const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
                     if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
-                    select_hit(&selection, &hits[lane], index, triangles[index].light >= 0);
+                    select_hit(&selection, &hits[lane], index, b->light[lane] >= 0);
                     if (stop_at_first_hit) return selected_hit(&selection);
                 }
             }
@@ -322,13 +325,13 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     }
 }
 
-WF_INLINE RayHit bvh_closest_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles,
+WF_INLINE RayHit bvh_closest_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                                  float3 origin, float3 direction, float t_max WF_HIT_FILTER_PARAM) {
     return bvh_traverse(nodes, triangles, origin, direction, t_max, 0 WF_HIT_FILTER_ARG);
 }
 
 /* 1 if any triangle is hit with t in (0, t_max). */
-WF_INLINE int bvh_any_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Triangle* triangles, float3 origin,
+WF_INLINE int bvh_any_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles, float3 origin,
                           float3 direction, float t_max WF_HIT_FILTER_PARAM) {
     return bvh_traverse(nodes, triangles, origin, direction, t_max, 1 WF_HIT_FILTER_ARG).triangle >= 0;
 }

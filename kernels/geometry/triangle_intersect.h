@@ -217,12 +217,12 @@ WF_FORCE_INLINE float4 t_error_bound(const WatertightRay* ray, CornerLanes a, Co
     return select(make_float4(INFINITY, INFINITY, INFINITY, INFINITY), bound, isgreater(denominator, zero));
 }
 
-/* The lanes whose triangle the ray hits with its exact t surely in (0,
- * t_max), as bit i for lane i, with hits[i] filled for each; of those, only
- * the ones whose t is at most t_cull (traversal has no use for the others,
- * and skips the bound for them). */
-WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const TriangleLanes* triangles, float t_max,
-                                             float t_cull, TriangleHit* hits) {
+/* Of the lanes set in `lanes`, those whose triangle the ray hits with its
+ * exact t surely in (0, t_max), as bit i for lane i, with hits[i] filled for
+ * each; of those, only the ones whose t is at most t_cull (traversal has no
+ * use for the others, and skips the bound for them). */
+WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const TriangleLanes* triangles, uint32_t lanes,
+                                             float t_max, float t_cull, TriangleHit* hits) {
     WF_FP_CONTRACT_OFF
     const CornerLanes a = corner_minus(triangles->v0, ray->origin);
     const CornerLanes b = corner_minus(triangles->v1, ray->origin);
@@ -237,7 +237,7 @@ WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const Tri
     float4 e2 = edge_function(bx, by, ax, ay);
     const float4 zero = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
 #ifdef WF_EDGE_FUNCTION_DOUBLE_FALLBACK
-    if (lane_bits4(isequal(e0, zero) | isequal(e1, zero) | isequal(e2, zero)) != 0u)
+    if ((lane_bits4(isequal(e0, zero) | isequal(e1, zero) | isequal(e2, zero)) & lanes) != 0u)
         redo_zero_edge_functions(ax, ay, bx, by, cx, cy, &e0, &e1, &e2);
 #endif
     /* Mixed signs: a miss. */
@@ -245,7 +245,7 @@ WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const Tri
     const int4 any_positive = isgreater(e0, zero) | isgreater(e1, zero) | isgreater(e2, zero);
     const float4 det = e0 + e1 + e2;
     int4 valid = ~(any_negative & any_positive) & ~isequal(det, zero);
-    if (lane_bits4(valid) == 0u) return 0u;
+    if ((lane_bits4(valid) & lanes) == 0u) return 0u;
 
     const float4 az = ray->scale_z * a.z, bz = ray->scale_z * b.z, cz = ray->scale_z * c.z;
     const float4 scaled_t = e0 * az + e1 * bz + e2 * cz;
@@ -255,12 +255,12 @@ WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const Tri
     const float4 cull = make_float4(t_cull, t_cull, t_cull, t_cull);
     /* The bound below only narrows (0, t_max). */
     valid = valid & isgreater(t, zero) & isless(t, limit) & islessequal(t, cull);
-    if (lane_bits4(valid) == 0u) return 0u;
+    if ((lane_bits4(valid) & lanes) == 0u) return 0u;
     /* Rounding can put t above 0 for a plane through or behind the origin, as
      * for the surface a ray has just left, and below t_max for one at or
      * beyond the end of a shadow segment. */
     const float4 t_error = t_error_bound(ray, a, b, c, ax, bx, cx, ay, by, cy, az, bz, cz, t, inv_det);
-    const uint32_t bits = lane_bits4(valid & isgreater(t, t_error) & isless(t + t_error, limit));
+    const uint32_t bits = lane_bits4(valid & isgreater(t, t_error) & isless(t + t_error, limit)) & lanes;
     if (bits == 0u) return 0u;
     float lane_t[4], lane_error[4], lane_u[4], lane_v[4];
     vstore4(t, 0, lane_t);
@@ -295,7 +295,7 @@ WF_INLINE int intersect_triangle(const WatertightRay* ray, float3 v0, float3 v1,
     one.v1 = corner_in_every_lane(ray, v1);
     one.v2 = corner_in_every_lane(ray, v2);
     TriangleHit hits[4];
-    if (!(intersect_triangles(ray, &one, t_max, t_max, hits) & 1u)) return 0;
+    if (!intersect_triangles(ray, &one, 1u, t_max, t_max, hits)) return 0;
     *hit = hits[0];
     return 1;
 }

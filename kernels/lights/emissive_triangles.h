@@ -8,6 +8,7 @@
 
 #include "wavefront/scene_types.h"
 #include "common/sampling.h"
+#include "geometry/triangle_blocks.h"
 #include "geometry/ray_offset.h"
 #include "lights/light_sample.h"
 #include "materials/alpha_mask.h"
@@ -24,8 +25,10 @@ inline float light_pdf_solid_angle(float pmf, float area, float dist2, float cos
 inline LightSample sample_emissive_triangle(LightEntry entry, const Scene* scene, float3 receiver, float2 u) {
     LightSample s = no_light_sample();
     s.segment_end = WF_SEGMENT_TO_SURFACE;
-    const __global Triangle* t = &scene->triangles[entry.index];
-    const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
+    const float3 v0 = triangle_corner(scene->triangles, entry.index, 0);
+    const float3 v1 = triangle_corner(scene->triangles, entry.index, 1);
+    const float3 v2 = triangle_corner(scene->triangles, entry.index, 2);
+    const uint material = triangle_material(scene->triangles, entry.index);
     const float2 b = sample_triangle_uniform(u);
     s.point = interpolate_triangle(v0, v1, v2, b.x, b.y);
     s.point_error = interpolation_error(v0, v1, v2, b.x, b.y);
@@ -37,12 +40,12 @@ inline LightSample sample_emissive_triangle(LightEntry entry, const Scene* scene
     s.wi = -to_receiver / distance;
     const float3 front = cross_edges / (2.0f * area);
     const float cos_front = dot(front, to_receiver) / distance;
-    const __global Material* m = &scene->materials[t->material];
+    const __global Material* m = &scene->materials[material];
     const bool emits_toward = cos_front > 0.0f || (m->flags & WF_MATERIAL_DOUBLE_SIDED);
     s.normal = cos_front >= 0.0f ? front : -front;
     SurfacePoint point;
     point.triangle = entry.index;
-    point.material = t->material;
+    point.material = material;
     point.b1 = b.x;
     point.b2 = b.y;
     /* A point in an alpha-masked hole is not there: BSDF rays pass through it. */

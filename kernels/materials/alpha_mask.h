@@ -7,16 +7,17 @@
 #ifndef WF_ALPHA_MASK_H
 #define WF_ALPHA_MASK_H
 
+#include "geometry/triangle_blocks.h"
 #include "materials/surface_texture.h"
 #include "materials/vertex_color.h"
 
 /* The scene, whose textures say where a masked material is opaque. */
 typedef Scene HitFilter;
 
-inline int hit_passes_filter(const HitFilter* scene, __global const Triangle* triangles, int triangle, float b1,
+inline int hit_passes_filter(const HitFilter* scene, __global const TriangleBlock* triangles, int triangle, float b1,
                              float b2) {
 #if WF_HAS_ALPHA_MASK
-    const uint material = triangles[triangle].material;
+    const uint material = triangle_material(triangles, (uint)triangle);
     const MaterialTextureParams p = scene->material_textures[material];
     if (p.alpha_mode != WF_ALPHA_MASK) return 1;
     SurfacePoint point;

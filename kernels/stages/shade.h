@@ -32,6 +32,7 @@
 #include "bsdf/kinds.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
+#include "geometry/triangle_blocks.h"
 
 typedef struct SurfaceHit {
     float3 position;
@@ -42,10 +43,12 @@ typedef struct SurfaceHit {
     float area;
 } SurfaceHit;
 
-inline SurfaceHit surface_at(__global const Triangle* t, __global const TriangleNormals* n, const Scene* scene,
-                             const SurfacePoint* point, float4 hit, float3 direction) {
+inline SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, float4 hit, float3 direction) {
     SurfaceHit s;
-    const float3 v0 = vload3(0, t->v0), v1 = vload3(0, t->v1), v2 = vload3(0, t->v2);
+    const float3 v0 = triangle_corner(scene->triangles, point->triangle, 0);
+    const float3 v1 = triangle_corner(scene->triangles, point->triangle, 1);
+    const float3 v2 = triangle_corner(scene->triangles, point->triangle, 2);
+    __global const TriangleNormals* n = &scene->normals[point->triangle];
     /* From the corners, not origin + t·direction: off the triangle by its own
      * rounding alone, which position_error bounds. */
     s.position = interpolate_triangle(v0, v1, v2, hit.y, hit.z);
@@ -135,14 +138,13 @@ inline bool shade_surface(PathState* path, const RenderParams* params, uint slot
     }
 
     const uint sample = current.sample;
-    const __global Triangle* t = &scene->triangles[triangle];
-    const __global Material* m = &scene->materials[t->material];
     SurfacePoint point;
     point.triangle = (uint)triangle;
-    point.material = t->material;
+    point.material = triangle_material(scene->triangles, (uint)triangle);
     point.b1 = hit.y;
     point.b2 = hit.z;
-    const SurfaceHit s = surface_at(t, &scene->normals[triangle], scene, &point, hit, direction);
+    const __global Material* m = &scene->materials[point.material];
+    const SurfaceHit s = surface_at(scene, &point, hit, direction);
 #if WF_HAS_AOVS
     if (depth == 0u) /* camera rays are unit: t is the distance */
         add_first_hit_aovs(film, pixel, surface_bsdf(m, scene, &point, params->hemisphere).base_color,
@@ -150,9 +152,10 @@ inline bool shade_surface(PathState* path, const RenderParams* params, uint slot
 #endif
 
     /* Emission seen along the ray. */
-    if (t->light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
+    const int light = triangle_light(scene->triangles, (uint)triangle);
+    if (light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
         const float cos_light = -dot(s.geometric_normal, direction);
-        const float pdf_light = light_pdf_solid_angle(scene->lights[t->light].pmf, s.area, hit.x * hit.x, cos_light);
+        const float pdf_light = light_pdf_solid_angle(scene->lights[light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
         add_radiance(path, params, film, slot, pixel, depth, weight * throughput * surface_emission(m, scene, &point));
     }

@@ -18,10 +18,11 @@
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
 #include "scene_view.h"
+#include "geometry/triangle_blocks.h"
 
 inline uint material_key(const PathState* path, uint slot, const Scene* scene) {
     const int triangle = path_hit_triangle(path, slot);
-    return triangle < 0 ? 0u : (scene->triangles[triangle].material + 1u) % WF_SORT_KEYS;
+    return triangle < 0 ? 0u : (triangle_material(scene->triangles, (uint)triangle) + 1u) % WF_SORT_KEYS;
 }
 
 /* Zeroes the group's local key counts (every work-item calls it). */

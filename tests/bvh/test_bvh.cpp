@@ -39,52 +39,49 @@ uint32_t bits(float f) {
     return b;
 }
 
-glm::vec3 corner(const float* p) { return glm::vec3(p[0], p[1], p[2]); }
-
-void store(float* out, const glm::vec3& p) {
-    out[0] = p.x;
-    out[1] = p.y;
-    out[2] = p.z;
-}
-
-// A scene's triangles with their BVH, in BVH order as the device reads them.
-// Every fifth triangle of the input is an emitter, so that comparisons also
-// cover the rule that prefers emitters (bvh_traverse.h).
+// A scene's triangles with their BVH, in blocks of four in BVH order as the
+// device reads them (lanes no leaf uses repeat lane 0, as
+// host/device/device_scene.cpp fills them). Every fifth triangle of the input
+// is an emitter, so that comparisons also cover the rule that prefers
+// emitters (bvh_traverse.h).
 struct BvhScene {
     explicit BvhScene(std::vector<glm::vec3> corners)
         : positions(std::move(corners)), bvh(build_bvh(positions)) {
-        triangles.resize(bvh.order.size());
-        for (size_t i = 0; i < triangles.size(); ++i) {
-            const size_t t = bvh.order[i];
-            store(triangles[i].v0, positions[3 * t]);
-            store(triangles[i].v1, positions[3 * t + 1]);
-            store(triangles[i].v2, positions[3 * t + 2]);
-            triangles[i].material = 0;
-            triangles[i].light = t % 5 == 0 ? 0 : -1;
-            triangles[i].mesh = 0;
+        triangles.resize(bvh.order.size() / WF_BLOCK_LANES);
+        for (size_t i = 0; i < bvh.order.size(); ++i) {
+            TriangleBlock& block = triangles[i / WF_BLOCK_LANES];
+            const size_t lane = i % WF_BLOCK_LANES;
+            const size_t t = triangle_at(i) >= 0 ? bvh.order[i] : bvh.order[i - lane];
+            for (int c = 0; c < 3; ++c)
+                for (int k = 0; k < 3; ++k) block.corners[3 * c + k][lane] = positions[3 * t + c][k];
+            block.material[lane] = 0;
+            block.light[lane] = triangle_at(i) >= 0 && t % 5 == 0 ? 0 : -1;
         }
     }
+    // The scene triangle at BVH position i, or -1 for a lane no leaf uses.
+    int64_t triangle_at(size_t i) const { return bvh.order[i] == kNoTriangle ? -1 : int64_t{bvh.order[i]}; }
     RayHit closest(const Ray& r) const {
         return wf_device::bvh_closest_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, r.t_max);
     }
     bool any(const Ray& r, float t_max) const {
         return wf_device::bvh_any_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, t_max) != 0;
     }
-    // The triangles the ray hits with no limit on t, in index order: those it
-    // hits below any t_max are among them. Four at a time, in the lanes of the
-    // same test (each lane's answer is intersect_triangle's), for speed; the
-    // lanes past the last triangle repeat it.
+    // The BVH positions of the triangles the ray hits with no limit on t, in
+    // index order: those it hits below any t_max are among them. Four at a
+    // time, in the lanes of the same test (each lane's answer is
+    // intersect_triangle's), for speed; corners gathered here from the input.
     std::vector<int32_t> hit_triangles(const Ray& r) const {
         const wf_device::WatertightRay w = wf_device::watertight_ray(r.origin, r.direction);
         std::vector<int32_t> hit;
-        for (size_t first = 0; first < triangles.size(); first += 4) {
+        for (size_t first = 0; first < bvh.order.size(); first += WF_BLOCK_LANES) {
             float lanes[3][3][4]; // corner, permuted axis, lane
+            uint32_t real = 0;
             for (size_t lane = 0; lane < 4; ++lane) {
-                const Triangle& tri = triangles[std::min(first + lane, triangles.size() - 1)];
-                const float* corners[3] = {tri.v0, tri.v1, tri.v2};
+                real |= (triangle_at(first + lane) >= 0 ? 1u : 0u) << lane;
+                const size_t t = triangle_at(first + lane) >= 0 ? bvh.order[first + lane] : bvh.order[first];
                 for (int c = 0; c < 3; ++c)
                     for (int k = 0; k < 3; ++k)
-                        lanes[c][k][lane] = corners[c][k == 0 ? w.kx : (k == 1 ? w.ky : w.kz)];
+                        lanes[c][k][lane] = positions[3 * t + c][k == 0 ? w.kx : (k == 1 ? w.ky : w.kz)];
             }
             wf_device::TriangleLanes four;
             wf_device::CornerLanes* corner_lanes[3] = {&four.v0, &four.v1, &four.v2};
@@ -94,8 +91,8 @@ struct BvhScene {
                 corner_lanes[c]->z = wf_device::vload4(0, lanes[c][2]);
             }
             wf_device::TriangleHit h[4];
-            const uint32_t found = wf_device::intersect_triangles(&w, &four, kInfinity, kInfinity, h);
-            for (size_t lane = 0; lane < 4 && first + lane < triangles.size(); ++lane)
+            const uint32_t found = wf_device::intersect_triangles(&w, &four, real, kInfinity, kInfinity, h);
+            for (size_t lane = 0; lane < 4; ++lane)
                 if (found >> lane & 1u) hit.push_back(static_cast<int32_t>(first + lane));
         }
         return hit;
@@ -108,20 +105,21 @@ struct BvhScene {
         for (int32_t i : candidates) {
             wf_device::TriangleHit h;
             if (hits(w, static_cast<size_t>(i), t_max, &h))
-                wf_device::select_hit(&selection, &h, i, triangles[static_cast<size_t>(i)].light >= 0);
+                wf_device::select_hit(&selection, &h, i, light(static_cast<size_t>(i)) >= 0);
         }
         return wf_device::selected_hit(&selection);
     }
     RayHit brute_force(const Ray& r) const { return select(r, hit_triangles(r), r.t_max); }
+    int32_t light(size_t i) const { return triangles[i / WF_BLOCK_LANES].light[i % WF_BLOCK_LANES]; }
 
     std::vector<glm::vec3> positions;
     Bvh bvh;
-    std::vector<Triangle> triangles;
+    std::vector<TriangleBlock> triangles;
 
 private:
     bool hits(const wf_device::WatertightRay& w, size_t i, float t_max, wf_device::TriangleHit* hit) const {
-        const Triangle& tri = triangles[i];
-        return wf_device::intersect_triangle(&w, corner(tri.v0), corner(tri.v1), corner(tri.v2), t_max, hit) != 0;
+        const glm::vec3* p = &positions[3 * bvh.order[i]];
+        return wf_device::intersect_triangle(&w, p[0], p[1], p[2], t_max, hit) != 0;
     }
 };
 
@@ -156,17 +154,19 @@ public:
     void run() {
         const Bvh& bvh = scene_.bvh;
         const size_t count = scene_.positions.size() / 3;
-        ASSERT_EQ(bvh.order.size(), count);
+        ASSERT_EQ(bvh.order.size() % WF_BLOCK_LANES, 0u);
+        ASSERT_GE(bvh.order.size(), count);
         std::vector<int> in_order(count, 0);
         for (uint32_t t : bvh.order) {
+            if (t == kNoTriangle) continue;
             ASSERT_LT(t, count);
             ++in_order[t];
         }
         const int need = walk(0, 1, nullptr);
-        for (size_t t = 0; t < count; ++t) {
-            EXPECT_EQ(in_order[t], 1) << "triangle " << t << " in order";
-            EXPECT_EQ(in_leaves_[t], 1) << "BVH position " << t << " in leaves";
-        }
+        for (size_t t = 0; t < count; ++t) EXPECT_EQ(in_order[t], 1) << "triangle " << t << " in order";
+        for (size_t i = 0; i < bvh.order.size(); ++i)
+            EXPECT_EQ(in_leaves_[i], scene_.triangle_at(i) >= 0 ? 1 : 0) << "BVH position " << i << " in leaves";
+
         for (size_t n = 0; n < visits_.size(); ++n) EXPECT_EQ(visits_[n], 1) << "node " << n;
         EXPECT_EQ(depth_, bvh.depth);
         EXPECT_LE(need, WF_BVH_STACK_SIZE) << "traversal could overflow its stack";
@@ -194,6 +194,10 @@ private:
                 const uint32_t first = child & WF_BVH_FIRST_MASK;
                 const uint32_t count = ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1;
                 EXPECT_LE(size_t{first} + count, in_leaves_.size());
+                if (count >= WF_BLOCK_LANES)
+                    EXPECT_EQ(first % WF_BLOCK_LANES, 0u) << "a leaf of four or more starts a block";
+                else
+                    EXPECT_EQ(first / WF_BLOCK_LANES, (first + count - 1) / WF_BLOCK_LANES) << "within one block";
                 for (uint32_t i = first; i < first + count && i < in_leaves_.size(); ++i) {
                     ++in_leaves_[i];
                     for (int c = 0; c < 3; ++c)
@@ -424,7 +428,7 @@ TEST(Bvh, IdenticalTrianglesSplitInHalf) {
     const Ray ray{glm::vec3(0.1f, 0.2f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
     const RayHit hit = scene.closest(ray);
     int32_t first_emitter = 0;
-    while (scene.triangles[static_cast<size_t>(first_emitter)].light < 0) ++first_emitter;
+    while (scene.light(static_cast<size_t>(first_emitter)) < 0) ++first_emitter;
     EXPECT_EQ(hit.triangle, first_emitter);
     EXPECT_EQ(bits(hit.t), bits(scene.brute_force(ray).t));
     Random r(2);

@@ -23,8 +23,10 @@ TEST(SortByMaterial, GroupsTheExtensionQueueByMaterial) {
     const cl::CommandQueue& q = device.queue;
     constexpr uint32_t kPaths = 5000, kTriangles = 700, kKeys = 256;
     std::mt19937 rng(3);
-    std::vector<Triangle> triangles(kTriangles);
-    for (Triangle& t : triangles) t.material = rng() % 300; // more materials than keys: they share
+    std::vector<uint32_t> material(kTriangles);
+    for (uint32_t& m : material) m = rng() % 300; // more materials than keys: they share
+    std::vector<TriangleBlock> triangles(kTriangles / WF_BLOCK_LANES + 1);
+    for (uint32_t t = 0; t < kTriangles; ++t) triangles[t / WF_BLOCK_LANES].material[t % WF_BLOCK_LANES] = material[t];
     std::vector<cl_float4> hits(kPaths);
     std::vector<int32_t> hit_triangle(kPaths);
     for (uint32_t i = 0; i < kPaths; ++i) {
@@ -68,7 +70,7 @@ TEST(SortByMaterial, GroupsTheExtensionQueueByMaterial) {
 
     auto key = [&](cl_uint slot) {
         const int32_t t = hit_triangle[slot];
-        return t < 0 ? 0u : (triangles[t].material + 1u) % kKeys;
+        return t < 0 ? 0u : (material[t] + 1u) % kKeys;
     };
     for (uint32_t i = 1; i < kPaths; ++i) ASSERT_LE(key(result[i - 1]), key(result[i])) << "at " << i;
     std::vector<cl_uint> slots = result;

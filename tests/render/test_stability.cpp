@@ -31,6 +31,7 @@
 #include "base/errors.h"
 #include "gltf/gltf_loader.h"
 #include "device/kernel_sources.h"
+#include "geometry/triangle_blocks.h"
 #include "render/renderer.h"
 #include "support/statistics.h"
 #include "support/test_support.h"
@@ -183,7 +184,7 @@ TEST(Stability, EdgeOnLightsAtGrazingViewAddNothing) {
     ASSERT_EQ(data.lights.size(), 6u);
     double edge_on_pmf = 0.0;
     for (const LightEntry& l : data.lights)
-        if (data.triangles[l.index].v0[1] == 0.0f) edge_on_pmf += l.pmf;
+        if (wf_device::triangle_corner(data.triangles.data(), l.index, 0).y == 0.0f) edge_on_pmf += l.pmf;
     EXPECT_GT(edge_on_pmf, 0.5);
     const size_t tiny = edge_on.positions.size() - 3;
     EXPECT_EQ(glm::length(glm::cross(edge_on.positions[tiny + 1] - edge_on.positions[tiny],
