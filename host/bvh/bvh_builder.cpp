@@ -15,9 +15,9 @@
 // at kNodeCost, and becomes one leaf (tested four triangles at a time) where
 // that is no dearer. Besides the time, it saves the memory of those nodes.
 //
-// The stack bound. A visit that meets k >= 2 children pushes k and pops one,
-// so a subtree needs room for k entries at once, and k - 1 more than the
-// child it goes on to. A binary subtree of height h (a leaf has 0) needs h + 1
+// The stack bound. A visit that meets k >= 2 children pushes k - 1 and goes
+// on to the other, so a subtree needs room for k - 1 more than the child it
+// goes on to (and, counted as k at once below, one to spare). A binary subtree of height h (a leaf has 0) needs h + 1
 // left as it is. Each node is given a budget, the room left to its subtree:
 // the whole stack at the root, which kMaxBinaryDepth keeps at least the
 // root's height + 1. A child is opened only while every interior child keeps a

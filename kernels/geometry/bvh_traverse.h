@@ -63,10 +63,12 @@
  * reports only the lanes of the leaf; traversal keeps no copy of the
  * triangles.
  *
- * Order of visits: a visit that meets one child goes straight on to it; one
- * that meets several pushes them all, sorted so that the nearest is on top
- * (unsorted for any-hit queries, where order buys nothing), and goes on to
- * the top one. Each pending child keeps where the ray enters its box, and is
+ * Order of visits: a visit goes straight on to the nearest child it meets,
+ * whose hits may cull the others, and pushes the others as they come (a full
+ * sort of them bought nothing measurable, bench/results/ray-throughput.md);
+ * an any-hit query, which its first hit ends wherever it is, goes on to the
+ * last slot met, the child the collapse opened last (faster for shadow rays
+ * than the first). Each pending child keeps where the ray enters its box, and is
  * dropped when popped if the window's end has since fallen below that entry:
  * the box test itself would now fail (its exit is scaled by the same
  * 1 + 2^-21), so nothing is culled that the test would keep. The stack holds
@@ -294,24 +296,22 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
             WF_GLOBAL const BvhNode* node = nodes + child;
             float entry[WF_BVH_WIDTH];
             uint32_t met = child_entries(&box, node, selection.window_end, entry);
-            if (met != 0u && (met & (met - 1u)) == 0u) { /* one child: no stack */
-                child = node->child[lowest_bit(met)];
-                continue;
-            }
-            /* Several: pushed in order of entry, the nearest on top, since
-             * hits there may cull the others; as they come for an any-hit
-             * query, which the first hit ends wherever it is. */
-            const int base = stack_size;
-            for (; met != 0u; met &= met - 1u) {
-                const uint32_t slot = lowest_bit(met);
-                int i = stack_size++;
-                for (; !stop_at_first_hit && i > base && stack_entry[i - 1] < entry[slot]; --i) {
-                    stack_entry[i] = stack_entry[i - 1];
-                    stack_child[i] = stack_child[i - 1];
+            if (met != 0u) { /* on to the nearest (see above), the others pushed */
+                uint32_t next = stop_at_first_hit ? 31u - clz(met) : lowest_bit(met);
+                if (!stop_at_first_hit)
+                    for (uint32_t m = met & (met - 1u); m != 0u; m &= m - 1u) {
+                        const uint32_t slot = lowest_bit(m);
+                        if (entry[slot] < entry[next]) next = slot;
+                    }
+                for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u) {
+                    const uint32_t slot = lowest_bit(m);
+                    stack_entry[stack_size] = entry[slot];
+                    stack_child[stack_size] = node->child[slot];
+                    prefetch_child(nodes, triangles, stack_child[stack_size]);
+                    ++stack_size;
                 }
-                stack_entry[i] = entry[slot];
-                stack_child[i] = node->child[slot];
-                prefetch_child(nodes, triangles, stack_child[i]);
+                child = node->child[next];
+                continue;
             }
         }
         /* The next pending child, unless the window's end has moved below
