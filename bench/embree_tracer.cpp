@@ -52,7 +52,9 @@ EmbreeScene::EmbreeScene(const std::vector<glm::vec3>& positions, unsigned threa
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(scene_, geometry);
     rtcReleaseGeometry(geometry);
+    const auto start = std::chrono::steady_clock::now();
     rtcCommitScene(scene_);
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     check(device_, "building the scene");
 }
 
@@ -61,7 +63,7 @@ EmbreeScene::~EmbreeScene() {
     rtcReleaseDevice(device_);
 }
 
-EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays) const {
+EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays, float t_far) const {
     EmbreeHits out;
     out.t.resize(rays.size());
     out.prim.resize(rays.size());
@@ -74,7 +76,7 @@ EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays) const {
             h.ray.org_x = r.origin.x, h.ray.org_y = r.origin.y, h.ray.org_z = r.origin.z;
             h.ray.dir_x = r.direction.x, h.ray.dir_y = r.direction.y, h.ray.dir_z = r.direction.z;
             h.ray.tnear = 0.0f;
-            h.ray.tfar = kInfinity;
+            h.ray.tfar = t_far;
             h.ray.mask = ~0u;
             h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             rtcIntersect1(scene_, &context, &h);

@@ -4,6 +4,7 @@
 // number of std::threads, each taking one static chunk of the rays.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -33,15 +34,19 @@ public:
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-    // Closest hits, t in [0, infinity).
-    EmbreeHits intersect1(const std::vector<BatchRay>& rays) const;
+    // Closest hits, t in [0, t_far].
+    EmbreeHits intersect1(const std::vector<BatchRay>& rays, float t_far = INFINITY) const;
     // The same, eight consecutive rays per call.
     EmbreeHits intersect8(const std::vector<BatchRay>& rays) const;
     // Any hit along each ray's direction taken as the whole segment, t in [0, 1].
     EmbreeOcclusion occluded1(const std::vector<BatchRay>& rays) const;
 
+    // Wall time of the scene's build (rtcCommitScene) on the threads given.
+    double build_seconds() const { return build_seconds_; }
+
 private:
     unsigned threads_;
+    double build_seconds_ = 0.0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
 };

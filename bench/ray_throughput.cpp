@@ -15,6 +15,7 @@
 //
 // Exit codes as for `wavefront`: 0, 1 (the machine failed, or the tracers
 // disagree on more than 0.1% of some set's rays), 2 (the input is at fault).
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -40,6 +41,7 @@
 #include "render/renderer.h"
 #include "device/scene_features.h"
 #include "surface_rays.h"
+#include "tree_cost.h"
 
 namespace wf::bench {
 namespace {
@@ -124,7 +126,7 @@ Row closest_row(const std::string& set, const RayBatch& batch, const std::vector
 }
 
 Row any_row(const std::string& set, const RayBatch& batch, const std::vector<BatchRay>& rays,
-            const EmbreeScene& embree) {
+            const EmbreeScene& embree, const std::vector<glm::vec3>& positions) {
     Row row;
     row.set = set;
     row.rays = rays.size();
@@ -133,6 +135,7 @@ Row any_row(const std::string& set, const RayBatch& batch, const std::vector<Bat
     row.ours_seconds = ours.kernel_seconds;
     row.embree_seconds = theirs.seconds;
     row.agreement = compare_any(ours, theirs);
+    classify_embree_only(row.agreement, rays, ours, theirs, embree, positions);
     return row;
 }
 
@@ -149,12 +152,27 @@ struct Report {
     std::string scene, device, features;
     size_t triangles = 0;
     unsigned threads = 0;
+    double build_seconds = 0.0, embree_build_seconds = 0.0;
+    TreeCost tree;
     std::vector<Row> rows;
 };
 
+// How the segments Embree alone finds blocked split, where they were classified.
+std::string embree_only_split(const Agreement& a) {
+    if (a.embree_past_end + a.embree_inside == 0) return "";
+    return " [" + std::to_string(a.embree_past_end) + " at or past the segment's end, " +
+           std::to_string(a.embree_inside) + " inside it]";
+}
+
 void print_table(std::ostream& out, const Report& r) {
     out << "scene    " << r.scene << " (" << r.triangles << " triangles; compiled for: " << r.features << ")\n"
-        << "device   " << r.device << "; Embree on " << r.threads << " threads\n\n";
+        << "device   " << r.device << "; Embree on " << r.threads << " threads\n"
+        << std::fixed << std::setprecision(3) << "build    ours " << r.build_seconds << " s (one thread), Embree "
+        << r.embree_build_seconds << " s (RTC_BUILD_QUALITY_HIGH, " << r.threads << " threads)\n"
+        << std::setprecision(1) << "tree     " << static_cast<double>(r.tree.bytes) / r.triangles
+        << " bytes a triangle; a ray through the scene's box meets " << std::setprecision(2) << r.tree.node_visits
+        << " nodes and " << r.tree.block_tests << " blocks of four triangles (SAH)\n\n"
+        << std::defaultfloat;
     out << std::left << std::setw(10) << "set" << std::right << std::setw(10) << "rays" << std::setw(12) << "ours"
         << std::setw(12) << "Embree 1" << std::setw(13) << "ours/Embree" << std::setw(12) << "Embree 8"
         << std::setw(12) << "agreement" << "   (Mrays/s; agreement: hits as Embree's rtcIntersect1/rtcOccluded1)\n";
@@ -172,7 +190,7 @@ void print_table(std::ostream& out, const Report& r) {
         const Agreement& a = row.agreement;
         if (a.agree != a.rays)
             out << row.set << ": " << a.rays - a.agree << " disagree (" << a.ours_only << " hit by us alone, "
-                << a.embree_only << " by Embree alone, " << a.other_triangle << " another triangle, " << a.other_t << " t off by more than "
+                << a.embree_only << " by Embree alone" << embree_only_split(a) << ", " << a.other_triangle << " another triangle, " << a.other_t << " t off by more than "
                 << std::defaultfloat << kTTolerance << " relative)\n" << std::fixed;
     }
 }
@@ -181,7 +199,11 @@ void write_json(const std::string& path, const Report& r) {
     std::ofstream out(path);
     out << std::setprecision(6) << "{\n  \"scene\": " << json_string(r.scene) << ",\n  \"triangles\": " << r.triangles
         << ",\n  \"device\": " << json_string(r.device) << ",\n  \"features\": " << json_string(r.features)
-        << ",\n  \"threads\": " << r.threads << ",\n  \"sets\": [";
+        << ",\n  \"threads\": " << r.threads << ",\n  \"build_seconds\": " << r.build_seconds
+        << ",\n  \"embree_build_seconds\": " << r.embree_build_seconds
+        << ",\n  \"bytes_per_triangle\": " << static_cast<double>(r.tree.bytes) / r.triangles
+        << ",\n  \"sah_node_visits\": " << r.tree.node_visits << ",\n  \"sah_block_tests\": " << r.tree.block_tests
+        << ",\n  \"sets\": [";
     for (size_t i = 0; i < r.rows.size(); ++i) {
         const Row& row = r.rows[i];
         const double ours = mrays(row.rays, row.ours_seconds), embree = mrays(row.rays, row.embree_seconds);
@@ -202,7 +224,9 @@ int run(const Options& options) {
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
     const OpenClDevice device = open_device("cpu");
     check_shared_layouts(device);
+    const auto build_start = std::chrono::steady_clock::now();
     const Bvh bvh = build_bvh(scene.positions);
+    const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
     const DeviceScene uploaded = upload_scene(device.context, make_device_scene_data(scene, bvh));
     Report report;
     const KernelProgram program = build_render_program(device, scene, RenderSettings{}, &report.features);
@@ -210,6 +234,9 @@ int run(const Options& options) {
     report.scene = options.scene;
     report.triangles = scene.triangle_count();
     report.threads = options.threads;
+    report.build_seconds = build_seconds;
+    report.embree_build_seconds = embree.build_seconds();
+    report.tree = tree_cost(bvh);
     report.device = device.info.name + " (" + std::to_string(device.info.compute_units) + " compute units, " +
                     device.info.platform + " " + device.info.driver + ")";
     if (scene_features(scene).alpha_mask)
@@ -228,7 +255,8 @@ int run(const Options& options) {
     }
     {
         const std::vector<BatchRay> rays = shadow_segments(scene, options.rays, 2);
-        report.rows.push_back(any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree));
+        report.rows.push_back(
+            any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree, scene.positions));
     }
 
     print_table(std::cout, report);
