@@ -24,6 +24,10 @@ struct Agreement {
     size_t embree_past_end = 0; // at or beyond an end: Embree's rounding, not a blocker
     size_t embree_inside = 0;   // inside the segment: one our test does not report
     double fraction() const { return rays ? static_cast<double>(agree) / rays : 1.0; }
+    // The share of rays that agree or where Embree's own rounding alone differs.
+    double explained_fraction() const {
+        return rays ? static_cast<double>(agree + embree_past_end) / rays : 1.0;
+    }
 };
 
 // The relative tolerance on t.
