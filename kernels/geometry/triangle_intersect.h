@@ -23,13 +23,13 @@
  * An edge function that rounds to exactly 0 is recomputed in double, where the
  * products of floats are exact, so its sign is the true one.
  *
- * Four triangles are tested at once, one per float4 lane, as the BVH's leaves
- * are gathered; intersect_triangle is lane 0 of the same test, so one
+ * Four triangles are tested at once, one per float4 lane, as a block of the
+ * BVH's triangles holds them; intersect_triangle is lane 0 of the same test, so one
  * triangle alone gets the very bits it gets in a leaf. Every lane goes
  * through the scalar operations the formulas below name, in their order. The
- * permutation is applied as the corners are gathered into lanes (x lanes hold
- * each corner's kx component, and so on), so the shear is two operations per
- * coordinate.
+ * permutation is applied as the corners are loaded into lanes (x lanes hold
+ * each corner's kx component, and so on: a block's row for that axis), so the
+ * shear is two operations per coordinate.
  *
  * The device compiler may not contract a * b + c into fused multiply-adds in
  * these functions (WF_FP_CONTRACT_OFF): every vertex must go through the same
