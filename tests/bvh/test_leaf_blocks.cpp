@@ -16,8 +16,8 @@ uint32_t first_of(uint32_t child) { return child & WF_BVH_FIRST_MASK; }
 uint32_t count_of(uint32_t child) { return ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1; }
 
 TEST(LeafBlocks, SmallLeavesFillTheGapsBestFit) {
-    // Leaves of 3, 1, 2, 2, 5, 3, 1 triangles as runs of 0..16, in two nodes.
-    const std::vector<uint32_t> sizes = {3, 1, 2, 2, 5, 3, 1};
+    // Leaves of 2, 3, 1, 2, 5, 3, 1 triangles as runs of 0..16, in two nodes.
+    const std::vector<uint32_t> sizes = {2, 3, 1, 2, 5, 3, 1};
     Bvh bvh;
     bvh.nodes.resize(2);
     uint32_t run = 0;
@@ -28,9 +28,10 @@ TEST(LeafBlocks, SmallLeavesFillTheGapsBestFit) {
     for (uint32_t t = 0; t < run; ++t) bvh.order.push_back(100 + t);
     place_leaves_in_blocks(bvh);
 
-    // 3 opens block 0, 1 fills its last lane; the 2s share block 1; 5 takes
-    // block 2 and a lane of 3, where the next 3 fits; the last 1 opens block 4.
-    const std::vector<uint32_t> expected_first = {0, 3, 4, 6, 8, 13, 16};
+    // 2 opens block 0, 3 block 1; the 1 fills block 1 (best fit: the fuller
+    // block, not block 0), the next 2 block 0; 5 takes block 2 and a lane of
+    // 3, where the next 3 fits; the last 1 opens block 4.
+    const std::vector<uint32_t> expected_first = {0, 4, 7, 2, 8, 13, 16};
     run = 0;
     for (size_t i = 0; i < sizes.size(); ++i) {
         const uint32_t child = bvh.nodes[i < 4 ? 0 : 1].child[i % 4];
