@@ -47,11 +47,13 @@ uint32_t bits(float f) {
 struct BvhScene {
     explicit BvhScene(std::vector<glm::vec3> corners)
         : positions(std::move(corners)), bvh(build_bvh(positions)) {
-        triangles.resize(bvh.order.size() / WF_BLOCK_LANES);
+        // Rounded up, so that a BVH breaking the promise of whole blocks fails
+        // TreeCheck's assertion rather than this loop.
+        triangles.resize((bvh.order.size() + WF_BLOCK_LANES - 1) / WF_BLOCK_LANES);
         for (size_t i = 0; i < bvh.order.size(); ++i) {
             TriangleBlock& block = triangles[i / WF_BLOCK_LANES];
             const size_t lane = i % WF_BLOCK_LANES;
-            const size_t t = triangle_at(i) >= 0 ? bvh.order[i] : bvh.order[i - lane];
+            const size_t t = stand_in(i);
             for (int c = 0; c < 3; ++c)
                 for (int k = 0; k < 3; ++k) block.corners[3 * c + k][lane] = positions[3 * t + c][k];
             block.material[lane] = 0;
@@ -59,7 +61,15 @@ struct BvhScene {
         }
     }
     // The scene triangle at BVH position i, or -1 for a lane no leaf uses.
-    int64_t triangle_at(size_t i) const { return bvh.order[i] == kNoTriangle ? -1 : int64_t{bvh.order[i]}; }
+    // The triangle whose corners lane i holds: its own, else its block's lane
+    // 0 (else triangle 0, where a broken tree leaves even that empty).
+    size_t stand_in(size_t i) const {
+        const size_t lane0 = i - i % WF_BLOCK_LANES;
+        return triangle_at(i) >= 0 ? bvh.order[i] : (triangle_at(lane0) >= 0 ? bvh.order[lane0] : 0);
+    }
+    int64_t triangle_at(size_t i) const {
+        return i >= bvh.order.size() || bvh.order[i] == kNoTriangle ? -1 : int64_t{bvh.order[i]};
+    }
     RayHit closest(const Ray& r) const {
         return wf_device::bvh_closest_hit(bvh.nodes.data(), triangles.data(), r.origin, r.direction, r.t_max);
     }
@@ -78,7 +88,7 @@ struct BvhScene {
             uint32_t real = 0;
             for (size_t lane = 0; lane < 4; ++lane) {
                 real |= (triangle_at(first + lane) >= 0 ? 1u : 0u) << lane;
-                const size_t t = triangle_at(first + lane) >= 0 ? bvh.order[first + lane] : bvh.order[first];
+                const size_t t = stand_in(first + lane);
                 for (int c = 0; c < 3; ++c)
                     for (int k = 0; k < 3; ++k)
                         lanes[c][k][lane] = positions[3 * t + c][k == 0 ? w.kx : (k == 1 ? w.ky : w.kz)];
