@@ -14,7 +14,10 @@ case "${1:-}" in
   *) echo "scripts/setup.sh: unknown argument '$1' (expected nothing or --tests)" >&2; exit 2 ;;
 esac
 
-scripts/install_packages.sh
+# The tests also compile the kernels for AMD GPUs (bench/gpu_isa.py --check).
+extra=()
+if ((tests)); then extra=(clang-15 rocm-device-libs); fi
+scripts/install_packages.sh "${extra[@]}"
 # The Python module is built for the python3 a user types (Debian's, or one
 # of pyenv's), which needs NumPy, and pytest for the tests: Debian's come from
 # the packages above, another interpreter's from PyPI. NumPy 1: Debian 12's

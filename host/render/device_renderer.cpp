@@ -48,6 +48,24 @@ unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings) {
 
 } // namespace
 
+RenderProgramSource render_program_source(const DeviceInfo& device, const SceneFeatures& features,
+                                          const RenderSettings& settings) {
+    RenderProgramSource p;
+    p.root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
+    p.options = feature_defines(features);
+    if (settings.aovs) p.options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
+    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
+        p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
+    const bool group = settings.integrator == Integrator::Wavefront && schedule_for(device, settings) == Schedule::Group;
+    // The scan and the group schedule size their local arrays by the launch's local size.
+    if (settings.queue_push == QueuePush::Scan || group)
+        p.options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
+    if (const unsigned lanes = lane_width(device, settings); group && lanes > 1)
+        p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
+    return p;
+}
+
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
                                    std::string* features_described) {
     const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
@@ -55,19 +73,8 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
         *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
     const std::optional<ProgramCache> cache =
         settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
-    const char* root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
-    std::string options = feature_defines(features);
-    if (settings.aovs) options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
-    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
-        options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
-    const bool group = settings.integrator == Integrator::Wavefront && schedule_for(device.info, settings) == Schedule::Group;
-    // The scan and the group schedule size their local arrays by the launch's local size.
-    if (settings.queue_push == QueuePush::Scan || group)
-        options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
-    // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
-    if (const unsigned lanes = lane_width(device.info, settings); group && lanes > 1)
-        options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
-    return build_kernel_program(device, root, options, cache ? &*cache : nullptr);
+    const RenderProgramSource source = render_program_source(device.info, features, settings);
+    return build_kernel_program(device, source.root, source.options, cache ? &*cache : nullptr);
 }
 
 SceneBuild::SceneBuild(const Scene& scene) {

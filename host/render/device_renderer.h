@@ -11,6 +11,7 @@
 #include "device/device_scene.h"
 #include "device/kernel_program.h"
 #include "device/opencl_device.h"
+#include "device/scene_features.h"
 #include "film/film.h"
 #include "integrator/path_integrator.h"
 #include "render/render_report.h"
@@ -19,6 +20,16 @@
 #include "scene/scene.h"
 
 namespace wf {
+
+// What build_render_program compiles for a device of this kind: the root
+// source under kernels/ and the build options. bench/gpu_isa.py compiles the
+// same for GPU instruction sets through bench/kernel_source.cpp.
+struct RenderProgramSource {
+    std::string root;
+    std::string options;
+};
+RenderProgramSource render_program_source(const DeviceInfo& device, const SceneFeatures& features,
+                                          const RenderSettings& settings);
 
 // The stage kernels for `scene`: compiled for its features unless
 // settings.specialize is off, through the program cache in settings.cache_dir

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""gpu_isa.py -- what the renderer's kernels cost a GPU, without a GPU:
+every program the host builds for a GPU device (build/wavefront_kernel_source
+writes it out, expanded, with the host's own options), compiled by Debian's
+clang-15 for an AMD GPU with rocm-device-libs, and each kernel's registers,
+scratch (spills and private arrays), LDS and occupancy as the compiler's
+kernel-resource-usage remarks give them.
+
+Programs: the wavefront (the GPU's default schedule), the wavefront's group
+schedule, and the megakernel, each for the feature set of every scene given
+(default: the repository's scenes and every feature at once).
+
+Usage: python3 bench/gpu_isa.py [--target gfx90a|gfx1030] [--json FILE]
+                                [--markdown FILE] [--check] [--tool PATH] [SCENE ...]
+--check: exit 1 unless every program compiles (the CI test); prints nothing
+else. Needs clang-15 and rocm-device-libs (apt-get install clang-15
+rocm-device-libs). gfx90a is CDNA2 (MI200), gfx1030 RDNA2; Debian 12's
+rocm-device-libs (5.2) has no RDNA3 (gfx1100) libraries.
+"""
+
+import argparse
+import glob
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BITCODE = "/usr/lib/x86_64-linux-gnu/amdgcn/bitcode"
+PROGRAMS = [("wavefront", ["--integrator", "wavefront"]),
+            ("wavefront group", ["--integrator", "wavefront", "--schedule", "group"]),
+            ("megakernel", ["--integrator", "megakernel"])]
+FIELDS = {"SGPRs": "sgprs", "VGPRs": "vgprs", "ScratchSize [bytes/lane]": "scratch",
+          "LDS Size [bytes/block]": "lds", "Occupancy [waves/SIMD]": "waves"}
+
+
+def kernel_source(tool, scene, flags, out):
+    what = ["--all-features"] if scene is None else [scene]
+    done = subprocess.run([tool] + what + ["--device-type", "gpu", "-o", out] + flags, cwd=ROOT,
+                          capture_output=True, text=True, check=True)
+    return done.stdout.strip()
+
+
+def compile_for(target, source, options):
+    """Each kernel's figures, or raises CalledProcessError with the compiler's errors."""
+    command = ["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "amdgcn-amd-amdhsa", f"-mcpu={target}",
+               f"--rocm-device-lib-path={BITCODE}", "-Xclang", "-finclude-default-header", "-O3", "-c", source,
+               "-o", os.devnull, "-Rpass-analysis=kernel-resource-usage"] + options.split()
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise subprocess.CalledProcessError(done.returncode, command, done.stdout, done.stderr)
+    kernels, current = [], None
+    for line in done.stderr.splitlines():
+        m = re.search(r"remark: +(.+?): (\S+) \[-Rpass-analysis", line)
+        if not m:
+            continue
+        key, value = m.group(1).strip(), m.group(2)
+        if key == "Function Name":
+            current = {"kernel": value}
+            kernels.append(current)
+        elif current is not None and key in FIELDS:
+            current[FIELDS[key]] = int(value)
+    return kernels
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("scenes", nargs="*")
+    parser.add_argument("--target", default="gfx90a")
+    parser.add_argument("--json")
+    parser.add_argument("--markdown")
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--tool", default=os.path.join(ROOT, "build", "bench", "wavefront_kernel_source"),
+                        help="the wavefront_kernel_source to use (default: build/bench/)")
+    args = parser.parse_args()
+    if not shutil.which("clang-15") or not os.path.isdir(BITCODE):
+        sys.exit("gpu_isa.py: needs clang-15 and rocm-device-libs (apt-get install clang-15 rocm-device-libs)")
+    scenes = args.scenes or sorted(glob.glob(os.path.join(ROOT, "scenes", "*.gltf"))) + [None]
+
+    rows, failures = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in scenes:
+            name = "all features" if scene is None else os.path.basename(scene)
+            for program, flags in PROGRAMS:
+                source = os.path.join(tmp, "program.cl")
+                options = kernel_source(args.tool, scene, flags, source)
+                try:
+                    kernels = compile_for(args.target, source, options)
+                except subprocess.CalledProcessError as e:
+                    errors = [l for l in e.stderr.splitlines() if "error" in l][:3]
+                    failures.append(f"{name}, {program}: " + ("; ".join(errors) or "clang-15 failed"))
+                    continue
+                for k in kernels:
+                    rows.append({"scene": name, "program": program, "target": args.target, **k})
+    if failures:
+        for f in failures:
+            print(f"gpu_isa.py: does not compile for {args.target}: {f}", file=sys.stderr)
+        sys.exit(1)
+    if args.check:
+        return
+
+    lines = [f"`python3 bench/gpu_isa.py --target {args.target}` (clang-15, rocm-device-libs; the programs "
+             "the host builds for a GPU device, expanded by `wavefront_kernel_source`).", "",
+             "Kernels of the group program that the plain wavefront program shows alike are left out "
+             "(`--json` gives every row).", "",
+             "| scene | program | kernel | VGPRs | SGPRs | scratch (bytes a lane) | LDS (bytes) | waves a SIMD |",
+             "|---|---|---|--:|--:|--:|--:|--:|"]
+    plain = {(r["scene"], r["kernel"]): r for r in rows if r["program"] == "wavefront"}
+    for r in rows:
+        same = plain.get((r["scene"], r["kernel"]))
+        if r["program"] != "wavefront" and same and all(same.get(f) == r.get(f) for f in FIELDS.values()):
+            continue  # the group program's copy of a kernel the plain one shows alike
+        lines.append(f"| {r['scene']} | {r['program']} | {r['kernel']} | {r.get('vgprs', '')} | {r.get('sgprs', '')} "
+                     f"| {r.get('scratch', '')} | {r.get('lds', '')} | {r.get('waves', '')} |")
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(text)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(rows, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
