@@ -20,11 +20,11 @@
 // goes on to (counted below as k at once: one to spare). A binary subtree of
 // height h (a leaf has 0) needs h + 1 left as it is. Each node is given a
 // budget, the room left to its subtree: the whole stack at the root, which
-// kMaxBinaryDepth keeps at least the root's height + 1. A child is opened only while every interior child keeps a
-// budget of at least its own height + 1 (the children's budget being the
-// node's, less k - 1), so every subtree fits its budget, and traversal never
-// overflows its stack. Trees of real scenes are far too shallow for the
-// budget ever to stop an opening.
+// kMaxBinaryDepth keeps at least the root's height + 1. A child is opened
+// only while every interior child keeps a budget of at least its own height
+// + 1 (the children's budget being the node's, less k - 1), so every subtree
+// fits its budget, and traversal never overflows its stack. Trees of real
+// scenes are far too shallow for the budget ever to stop an opening.
 #include "bvh/bvh_builder.h"
 
 #include <algorithm>
