@@ -6,6 +6,7 @@
 #ifndef WF_KERNEL_PATH_STATE_H
 #define WF_KERNEL_PATH_STATE_H
 
+#include "wavefront/compat.h"
 #include "wavefront/path_state.h"
 #include "wavefront/render_params.h"
 #include "wavefront/stage_graph.h"
@@ -17,26 +18,26 @@ typedef struct PathState {
 #undef WF_PATH_MEMBER
 
 /* The packed lanes (include/wavefront/path_state.h says what each holds). */
-inline uint path_depth(const PathState* path, uint slot) { return as_uint(path->throughput[slot].w); }
-inline void set_path_throughput(PathState* path, uint slot, float3 throughput, uint depth) {
+WF_INLINE uint path_depth(const PathState* path, uint slot) { return as_uint(path->throughput[slot].w); }
+WF_INLINE void set_path_throughput(PathState* path, uint slot, float3 throughput, uint depth) {
     path->throughput[slot] = (float4)(throughput, as_float(depth));
 }
-inline uint path_samples_started(const PathState* path, uint slot) { return as_uint(path->radiance[slot].w); }
+WF_INLINE uint path_samples_started(const PathState* path, uint slot) { return as_uint(path->radiance[slot].w); }
 /* A new sample: no radiance yet, and one more sample started. */
-inline void start_path_radiance(PathState* path, uint slot, uint samples_started) {
+WF_INLINE void start_path_radiance(PathState* path, uint slot, uint samples_started) {
     path->radiance[slot] = (float4)(0.0f, 0.0f, 0.0f, as_float(samples_started));
 }
-inline int path_hit_triangle(const PathState* path, uint slot) { return as_int(path->hit[slot].w); }
-inline void set_path_hit(PathState* path, uint slot, float t, float u, float v, int triangle) {
+WF_INLINE int path_hit_triangle(const PathState* path, uint slot) { return as_int(path->hit[slot].w); }
+WF_INLINE void set_path_hit(PathState* path, uint slot, float t, float u, float v, int triangle) {
     path->hit[slot] = (float4)(t, u, v, as_float(triangle));
 }
 /* The light a pending shadow ray delivers if nothing blocks it, the bounce
  * layer it joins, and whether the path goes on after it. */
-inline void set_shadow_light(PathState* path, uint slot, float3 radiance, uint layer, bool then_continue) {
+WF_INLINE void set_shadow_light(PathState* path, uint slot, float3 radiance, uint layer, bool then_continue) {
     path->shadow_radiance[slot] = (float4)(radiance, as_float(layer | (then_continue ? WF_SHADOW_THEN_CONTINUE : 0u)));
 }
-inline uint shadow_light_layer(float4 shadow_radiance) { return as_uint(shadow_radiance.w) & ~WF_SHADOW_THEN_CONTINUE; }
-inline bool shadow_then_continues(float4 shadow_radiance) {
+WF_INLINE uint shadow_light_layer(float4 shadow_radiance) { return as_uint(shadow_radiance.w) & ~WF_SHADOW_THEN_CONTINUE; }
+WF_INLINE bool shadow_then_continues(float4 shadow_radiance) {
     return (as_uint(shadow_radiance.w) & WF_SHADOW_THEN_CONTINUE) != 0u;
 }
 
@@ -48,11 +49,11 @@ typedef struct PathSample {
     uint sample; /* its index within the pixel */
 } PathSample;
 
-inline uint pixels_owned(const RenderParams* params, uint slot) {
+WF_INLINE uint pixels_owned(const RenderParams* params, uint slot) {
     return (params->traced_pixels - 1u - slot) / params->pool_size + 1u;
 }
 
-inline PathSample nth_sample(const RenderParams* params, uint slot, uint n) {
+WF_INLINE PathSample nth_sample(const RenderParams* params, uint slot, uint n) {
     const uint owned = pixels_owned(params, slot);
     PathSample s;
     s.pixel = params->first_pixel + slot + (n % owned) * params->pool_size;
@@ -61,13 +62,13 @@ inline PathSample nth_sample(const RenderParams* params, uint slot, uint n) {
 }
 
 /* The sample the slot's path is tracing. */
-inline PathSample current_sample(const PathState* path, const RenderParams* params, uint slot) {
+WF_INLINE PathSample current_sample(const PathState* path, const RenderParams* params, uint slot) {
     return nth_sample(params, slot, path_samples_started(path, slot) - 1u);
 }
 
 /* Whether this work-item has a path in `queue` (the queue is shorter than
  * the launch, which is rounded up to whole work-groups), and which slot. */
-inline bool queue_slot(uint pool_size, __global const uint* queues, volatile __global const uint* counters,
+WF_INLINE bool queue_slot(uint pool_size, __global const uint* queues, volatile __global const uint* counters,
                        uint queue, uint* slot) {
     const uint index = get_global_id(0);
     const bool active = index < counters[queue];

@@ -123,7 +123,7 @@ typedef struct LocalQueue {
     uint length;
 } LocalQueue;
 
-inline void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&q->length)] = slot; }
+WF_INLINE void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&q->length)] = slot; }
 
 __kernel void group_wavefront(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;

@@ -53,6 +53,8 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     RenderProgramSource p;
     p.root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
     p.options = feature_defines(features);
+    // Device functions a GPU's linker can always find (wavefront/compat.h); PoCL runs faster without.
+    if (device.type != "cpu") p.options += " -DWF_STATIC_FUNCTIONS=1";
     if (settings.aovs) p.options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
         p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));

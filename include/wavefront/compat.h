@@ -26,9 +26,20 @@ typedef uint uint32_t;
 typedef int int32_t;
 #define WF_GLOBAL __global
 #define WF_CONSTANT __constant
+/* Device functions are WF_INLINE: C99's plain inline on a CPU device, static
+ * inline where the host asks for it (WF_STATIC_FUNCTIONS, for GPUs). Plain
+ * inline leaves no definition wherever the compiler declines to inline, which
+ * a GPU's linker rejects (bench/gpu_isa.py links each program for AMD GPUs);
+ * static fixes that, but made PoCL's renders 10-32% slower, its inliner then
+ * leaving large functions as calls. WF_FORCE_INLINE serves the traversal's
+ * inner loop, which PoCL's inliner otherwise leaves as calls. */
+#ifdef WF_STATIC_FUNCTIONS
+#define WF_INLINE static inline
+#define WF_FORCE_INLINE static inline __attribute__((always_inline))
+#else
 #define WF_INLINE inline
-/* For the traversal's inner loop, which PoCL's inliner otherwise leaves as calls. */
 #define WF_FORCE_INLINE inline __attribute__((always_inline))
+#endif
 /* OpenCL's prefetch() does nothing on PoCL; clang's builtin does. */
 #ifdef __clang__
 #define WF_PREFETCH(p) __builtin_prefetch(p)

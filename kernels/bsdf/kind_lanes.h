@@ -8,6 +8,7 @@
 #ifndef WF_BSDF_KIND_LANES_H
 #define WF_BSDF_KIND_LANES_H
 
+#include "wavefront/compat.h"
 #include "bsdf/kinds.h"
 
 #if WF_HAS_BSDF_OPAQUE && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
@@ -27,17 +28,17 @@ enum LaneField {
 
 #define WF_LANE_AT(soa, field, at) (soa)[(field) * WF_LANE_CAPACITY + (at)]
 
-inline void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
+WF_INLINE void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
     WF_LANE_AT(soa, field, at) = v.x;
     WF_LANE_AT(soa, field + 1, at) = v.y;
     WF_LANE_AT(soa, field + 2, at) = v.z;
 }
 
-inline float3 lanes_get3(__local const float* soa, uint field, uint at) {
+WF_INLINE float3 lanes_get3(__local const float* soa, uint field, uint at) {
     return (float3)(WF_LANE_AT(soa, field, at), WF_LANE_AT(soa, field + 1, at), WF_LANE_AT(soa, field + 2, at));
 }
 
-inline void bsdf_lanes_put(__local float* soa, uint at, const BsdfQuery* q) {
+WF_INLINE void bsdf_lanes_put(__local float* soa, uint at, const BsdfQuery* q) {
     lanes_put3(soa, WF_LANE_BASE, at, q->params.base_color);
     WF_LANE_AT(soa, WF_LANE_METALLIC, at) = q->params.metallic;
     WF_LANE_AT(soa, WF_LANE_ROUGHNESS, at) = q->params.roughness;
@@ -49,7 +50,7 @@ inline void bsdf_lanes_put(__local float* soa, uint at, const BsdfQuery* q) {
     lanes_put3(soa, WF_LANE_U, at, q->u);
 }
 
-inline BsdfAnswer bsdf_lanes_get(__local const float* soa, uint at) {
+WF_INLINE BsdfAnswer bsdf_lanes_get(__local const float* soa, uint at) {
     BsdfAnswer a;
     a.f_light = lanes_get3(soa, WF_LANE_F_LIGHT, at);
     a.pdf_light = WF_LANE_AT(soa, WF_LANE_PDF_LIGHT, at);
@@ -68,7 +69,7 @@ inline BsdfAnswer bsdf_lanes_get(__local const float* soa, uint at) {
 /* Answers the queries [first, first + WF_LANE_WIDTH) of `length`; a run that
  * ends past the queue first repeats its first query into the empty lanes, so
  * that no lane reads what nobody wrote. */
-inline void bsdf_lanes_answer(__local float* soa, uint first, uint length, uint hemisphere) {
+WF_INLINE void bsdf_lanes_answer(__local float* soa, uint first, uint length, uint hemisphere) {
     for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
         for (uint f = 0; f < WF_LANE_F_LIGHT; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
     WF_LANE_X(OpaqueParams) p;

@@ -13,7 +13,7 @@
 #undef WF_W
 
 #define IN(field) in[(field) * n + i]
-inline BsdfQuery probe_query(__global const float* in, uint n, uint i, uint hemisphere) {
+WF_INLINE BsdfQuery probe_query(__global const float* in, uint n, uint i, uint hemisphere) {
     BsdfQuery q;
     q.params.base_color = (float3)(IN(0), IN(1), IN(2));
     q.params.metallic = IN(3);
@@ -35,7 +35,7 @@ inline BsdfQuery probe_query(__global const float* in, uint n, uint i, uint hemi
     return q;
 }
 
-inline void store_answer(__global float* o, BsdfAnswer a) {
+WF_INLINE void store_answer(__global float* o, BsdfAnswer a) {
     const float v[12] = {a.f_light.x, a.f_light.y, a.f_light.z, a.pdf_light, a.sample.wi.x, a.sample.wi.y,
                          a.sample.wi.z, a.sample.f.x, a.sample.f.y, a.sample.f.z, a.sample.pdf, (float)a.sample.delta};
     for (int k = 0; k < 12; ++k) o[k] = v[k];

@@ -8,6 +8,7 @@
 #ifndef WF_BSDF_KINDS_H
 #define WF_BSDF_KINDS_H
 
+#include "wavefront/compat.h"
 #include "compiled_features.h"
 #include "wavefront/bsdf_kinds.h"
 #include "bsdf/bsdf.h"
@@ -44,7 +45,7 @@ typedef struct BsdfAnswer {
 } BsdfAnswer;
 
 #if WF_HAS_BSDF_OPAQUE
-inline OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
+WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     OpaqueParams_x1 p;
     p.base_color = rgb_from_float3(b->base_color);
     p.metallic = b->metallic;
@@ -55,7 +56,7 @@ inline OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     return p;
 }
 
-inline BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
+WF_INLINE BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
     const OpaqueParams_x1 p = opaque_params_x1(&q->params);
     const lvec1 wo = vec_from_float3(q->wo);
     const OpaqueAtWo_x1 at = opaque_at_wo_x1(&p, wo);
@@ -76,7 +77,7 @@ inline BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
 #endif
 
 #if WF_HAS_BSDF_GENERAL || !WF_HAS_BSDF_OPAQUE
-inline BsdfAnswer general_core(const BsdfQuery* q) {
+WF_INLINE BsdfAnswer general_core(const BsdfQuery* q) {
     const BsdfAtWo at = bsdf_at_wo(&q->params, q->wo); /* once, for both techniques */
     BsdfAnswer a;
     a.f_light = (float3)(0.0f);
@@ -88,7 +89,7 @@ inline BsdfAnswer general_core(const BsdfQuery* q) {
 #endif
 
 /* The core at width 1, by the material's kind. */
-inline BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
+WF_INLINE BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
 #if WF_HAS_BSDF_OPAQUE && (WF_HAS_BSDF_GENERAL)
     return kind == WF_BSDF_OPAQUE ? opaque_core_x1(q) : general_core(q);
 #elif WF_HAS_BSDF_OPAQUE

@@ -6,13 +6,14 @@
 #ifndef WF_BOUNCE_LAYERS_H
 #define WF_BOUNCE_LAYERS_H
 
+#include "wavefront/compat.h"
 #include "wavefront/render_params.h"
 #include "film_view.h"
 #include "common/film_add.h"
 #include "common/finite.h"
 
 /* Adds radiance that arrived after `bounces` reflections, when the render keeps layers. */
-inline void add_to_bounce_layer(const RenderParams* params, const FilmBuffers* film, uint pixel, uint bounces,
+WF_INLINE void add_to_bounce_layer(const RenderParams* params, const FilmBuffers* film, uint pixel, uint bounces,
                                 float3 radiance) {
     if (params->bounce_layers == 0u || !is_finite3(radiance)) return;
     const uint layer = min(bounces, params->bounce_layers - 1u);

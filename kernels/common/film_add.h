@@ -8,7 +8,9 @@
 #ifndef WF_FILM_ADD_H
 #define WF_FILM_ADD_H
 
-inline void film_add(__global float4* sum, __global float4* compensation, uint index, float4 x) {
+#include "wavefront/compat.h"
+
+WF_INLINE void film_add(__global float4* sum, __global float4* compensation, uint index, float4 x) {
     const float4 s = sum[index];
     const float4 y = x + compensation[index];
     const float4 t = s + y;

@@ -3,9 +3,11 @@
 #ifndef WF_FINITE_H
 #define WF_FINITE_H
 
-inline bool is_finite_bits(float x) { return (as_uint(x) & 0x7f800000u) != 0x7f800000u; }
+#include "wavefront/compat.h"
 
-inline bool is_finite3(float3 v) {
+WF_INLINE bool is_finite_bits(float x) { return (as_uint(x) & 0x7f800000u) != 0x7f800000u; }
+
+WF_INLINE bool is_finite3(float3 v) {
     return is_finite_bits(v.x) && is_finite_bits(v.y) && is_finite_bits(v.z);
 }
 

@@ -9,6 +9,7 @@
 #ifndef WF_FIRST_HIT_AOVS_H
 #define WF_FIRST_HIT_AOVS_H
 
+#include "wavefront/compat.h"
 #include "wavefront/render_params.h"
 #include "film_view.h"
 
@@ -16,7 +17,7 @@
 #define WF_HAS_AOVS 0
 #endif
 
-inline void add_first_hit_aovs(const FilmBuffers* film, uint pixel, float3 albedo, float3 normal, float distance) {
+WF_INLINE void add_first_hit_aovs(const FilmBuffers* film, uint pixel, float3 albedo, float3 normal, float distance) {
     film->aov_albedo[pixel] += (float4)(albedo, 0.0f);
     film->aov_normal_depth[pixel] += (float4)(normal, distance);
 }

@@ -15,6 +15,8 @@
 #ifndef WF_QUEUE_PUSH_H
 #define WF_QUEUE_PUSH_H
 
+#include "wavefront/compat.h"
+
 #define WF_PUSH_GROUP 0
 #define WF_PUSH_ATOMIC 1
 #define WF_PUSH_SCAN 2
@@ -30,7 +32,7 @@
 
 /* Adds `amount` from each work-item to `*counter`; returns the value of the
  * counter where this work-item's share starts. */
-inline uint group_atomic_add(volatile __global uint* counter, uint amount, __local uint* scratch) {
+WF_INLINE uint group_atomic_add(volatile __global uint* counter, uint amount, __local uint* scratch) {
 #if WF_QUEUE_PUSH == WF_PUSH_ATOMIC
     return amount ? atomic_add(counter, amount) : 0u;
 #elif WF_QUEUE_PUSH == WF_PUSH_SCAN
@@ -60,7 +62,7 @@ inline uint group_atomic_add(volatile __global uint* counter, uint amount, __loc
 }
 
 /* Appends `slot` to queue `queue` when `push` holds. */
-inline void queue_push(__global uint* queues, volatile __global uint* counters, uint pool_size,
+WF_INLINE void queue_push(__global uint* queues, volatile __global uint* counters, uint pool_size,
                        uint queue, uint slot, bool push, __local uint* scratch) {
     const uint at = group_atomic_add(&counters[queue], push ? 1u : 0u, scratch);
     if (push) queues[queue * pool_size + at] = slot;
@@ -69,7 +71,7 @@ inline void queue_push(__global uint* queues, volatile __global uint* counters, 
 /* Adds 1 to counters[bucket] for each work-item with `count` set. `histogram`
  * is `buckets` __local uints declared once at kernel scope; the work-group must
  * have at least `buckets` work-items. */
-inline void group_histogram_add(volatile __global uint* counters, uint buckets, uint bucket, bool count,
+WF_INLINE void group_histogram_add(volatile __global uint* counters, uint buckets, uint bucket, bool count,
                                 __local uint* histogram) {
     const uint lid = get_local_id(0);
     if (lid < buckets) histogram[lid] = 0u;

@@ -8,6 +8,8 @@
 #ifndef WF_RNG_H
 #define WF_RNG_H
 
+#include "wavefront/compat.h"
+
 /* Dimension groups used at each bounce; fixed, whatever the scene's features,
  * so that variants of the kernels draw the same numbers for the same path. */
 #define WF_RNG_CAMERA 0 /* x: pixel jitter x, y: pixel jitter y */
@@ -15,7 +17,7 @@
 #define WF_RNG_BSDF 2   /* x, y: direction; z: roulette */
 #define WF_RNG_GROUPS 3
 
-inline uint4 pcg4d(uint4 v) {
+WF_INLINE uint4 pcg4d(uint4 v) {
     v = v * 1664525u + 1013904223u;
     v.x += v.y * v.w;
     v.y += v.z * v.x;
@@ -30,7 +32,7 @@ inline uint4 pcg4d(uint4 v) {
 }
 
 /* 24 random bits scaled into [0, 1): exactly representable, never 1. */
-inline float4 rng_uniform4(uint seed, uint pixel, uint sample, uint bounce, uint group) {
+WF_INLINE float4 rng_uniform4(uint seed, uint pixel, uint sample, uint bounce, uint group) {
     const uint4 bits = pcg4d((uint4)(pixel, sample, bounce * WF_RNG_GROUPS + group, seed));
     return convert_float4(bits >> 8u) * (1.0f / 16777216.0f);
 }

@@ -14,6 +14,8 @@
 #ifndef WF_LANES_H
 #define WF_LANES_H
 
+#include "wavefront/compat.h"
+
 #define WF_CAT_(a, b) a##b
 #define WF_CAT(a, b) WF_CAT_(a, b)
 
@@ -37,13 +39,13 @@ WF_LANE_STRUCTS(16)
 #undef WF_LANE_STRUCTS
 
 /* One lane of a width-1 colour or direction as the scalar code's float3. */
-inline float3 rgb_to_float3(lrgb1 c) { return (float3)(c.r, c.g, c.b); }
-inline lrgb1 rgb_from_float3(float3 c) {
+WF_INLINE float3 rgb_to_float3(lrgb1 c) { return (float3)(c.r, c.g, c.b); }
+WF_INLINE lrgb1 rgb_from_float3(float3 c) {
     lrgb1 r = {c.x, c.y, c.z};
     return r;
 }
-inline float3 vec_to_float3(lvec1 v) { return (float3)(v.x, v.y, v.z); }
-inline lvec1 vec_from_float3(float3 v) {
+WF_INLINE float3 vec_to_float3(lvec1 v) { return (float3)(v.x, v.y, v.z); }
+WF_INLINE lvec1 vec_from_float3(float3 v) {
     lvec1 r = {v.x, v.y, v.z};
     return r;
 }

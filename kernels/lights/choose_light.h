@@ -4,6 +4,7 @@
 #ifndef WF_CHOOSE_LIGHT_H
 #define WF_CHOOSE_LIGHT_H
 
+#include "wavefront/compat.h"
 #include "wavefront/render_params.h"
 #include "compiled_features.h"
 #include "scene_view.h"
@@ -12,13 +13,13 @@
 #include "lights/environment.h"
 #include "lights/punctual.h"
 
-inline uint choose_light(__global const LightEntry* lights, uint count, float u_index, float u_alias) {
+WF_INLINE uint choose_light(__global const LightEntry* lights, uint count, float u_index, float u_alias) {
     const uint i = min((uint)(u_index * (float)count), count - 1u);
     return u_alias < lights[i].probability ? i : lights[i].alias;
 }
 
 /* u.x and u.w choose the light; u.y and u.z place the sample on it. */
-inline LightSample sample_light(const RenderParams* params, const Scene* scene, float3 receiver, float4 u) {
+WF_INLINE LightSample sample_light(const RenderParams* params, const Scene* scene, float3 receiver, float4 u) {
     const LightEntry entry = scene->lights[choose_light(scene->lights, params->light_count, u.x, u.w)];
 #if WF_HAS_EMISSIVE_TRIANGLES
     if (entry.kind == WF_LIGHT_TRIANGLE)

@@ -6,6 +6,7 @@
 #ifndef WF_EMISSIVE_TRIANGLES_H
 #define WF_EMISSIVE_TRIANGLES_H
 
+#include "wavefront/compat.h"
 #include "wavefront/scene_types.h"
 #include "common/sampling.h"
 #include "geometry/triangle_blocks.h"
@@ -16,13 +17,13 @@
 
 /* Solid-angle density of reaching a light point at distance² dist2 whose
  * surface makes cosine cos_light with the ray; 0 where it would overflow. */
-inline float light_pdf_solid_angle(float pmf, float area, float dist2, float cos_light) {
+WF_INLINE float light_pdf_solid_angle(float pmf, float area, float dist2, float cos_light) {
     const float pdf = pmf * dist2 / (area * cos_light);
     return (cos_light > 0.0f && area > 0.0f && pdf < INFINITY) ? pdf : 0.0f;
 }
 
 /* A point on the triangle of `entry`, as seen from `receiver`. */
-inline LightSample sample_emissive_triangle(LightEntry entry, const Scene* scene, float3 receiver, float2 u) {
+WF_INLINE LightSample sample_emissive_triangle(LightEntry entry, const Scene* scene, float3 receiver, float2 u) {
     LightSample s = no_light_sample();
     s.segment_end = WF_SEGMENT_TO_SURFACE;
     const float3 v0 = triangle_corner(scene->triangles, entry.index, 0);

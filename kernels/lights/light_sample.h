@@ -5,6 +5,7 @@
 #ifndef WF_LIGHT_SAMPLE_H
 #define WF_LIGHT_SAMPLE_H
 
+#include "wavefront/compat.h"
 #include "geometry/ray_offset.h"
 
 #define WF_SEGMENT_TO_SURFACE 0u  /* stops short of the light's surface: area lights */
@@ -23,7 +24,7 @@ typedef struct LightSample {
     float3 normal;      /* area lights: unit, of the emitting face toward the receiver */
 } LightSample;
 
-inline LightSample no_light_sample(void) {
+WF_INLINE LightSample no_light_sample(void) {
     LightSample s;
     s.wi = s.radiance = s.point = s.point_error = s.normal = (float3)(0.0f);
     s.pdf = 0.0f;
@@ -34,7 +35,7 @@ inline LightSample no_light_sample(void) {
 
 /* The shadow segment from `origin` (already offset off its surface) to the
  * light; `reach` is longer than any segment inside the scene's bounds. */
-inline float3 light_shadow_segment(const LightSample* s, float3 origin, float reach) {
+WF_INLINE float3 light_shadow_segment(const LightSample* s, float3 origin, float reach) {
     if (s->segment_end == WF_SEGMENT_TO_SURFACE)
         return segment_to_surface(origin, s->point, s->point_error, s->normal);
     if (s->segment_end == WF_SEGMENT_TO_POINT) return s->point - origin;

@@ -7,6 +7,7 @@
 #ifndef WF_ALPHA_MASK_H
 #define WF_ALPHA_MASK_H
 
+#include "wavefront/compat.h"
 #include "geometry/triangle_blocks.h"
 #include "materials/surface_texture.h"
 #include "materials/vertex_color.h"
@@ -14,7 +15,7 @@
 /* The scene, whose textures say where a masked material is opaque. */
 typedef Scene HitFilter;
 
-inline int hit_passes_filter(const HitFilter* scene, __global const TriangleBlock* triangles, int triangle, float b1,
+WF_INLINE int hit_passes_filter(const HitFilter* scene, __global const TriangleBlock* triangles, int triangle, float b1,
                              float b2) {
 #if WF_HAS_ALPHA_MASK
     const uint material = triangle_material(triangles, (uint)triangle);

@@ -5,12 +5,13 @@
 #ifndef WF_SURFACE_MATERIAL_H
 #define WF_SURFACE_MATERIAL_H
 
+#include "wavefront/compat.h"
 #include "bsdf/bsdf.h"
 #include "materials/surface_texture.h"
 #include "materials/valid_reflection.h"
 #include "materials/vertex_color.h"
 
-inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
+WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
                                uint hemisphere) {
     const float4 base = surface_texture(scene, p, WF_TEXTURE_BASE_COLOR);
     const float4 metallic_roughness = surface_texture(scene, p, WF_TEXTURE_METALLIC_ROUGHNESS);
@@ -40,12 +41,12 @@ inline BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, c
 }
 
 /* Radiance emitted by the front face at the point. */
-inline float3 surface_emission(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
+WF_INLINE float3 surface_emission(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
     return vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
 }
 
 /* x turned to the side of ng. */
-inline float3 facing(float3 x, float3 ng) { return dot(x, ng) < 0.0f ? -x : x; }
+WF_INLINE float3 facing(float3 x, float3 ng) { return dot(x, ng) < 0.0f ? -x : x; }
 
 /* The shading normal, on the side of ng (the unit geometric normal on the side
  * the ray arrived from, v the unit way back along it): the interpolated normal
@@ -55,7 +56,7 @@ inline float3 facing(float3 x, float3 ng) { return dot(x, ng) < 0.0f ? -x : x; }
  * orthogonal to n and the bitangent cross(n, t) w. A mapped normal that would
  * mirror v into the surface is bent back (materials/valid_reflection.h);
  * interpolated ones are left as the mesh gives them. */
-inline float3 surface_normal(const Scene* scene, const SurfacePoint* p, float3 n, float3 ng, float3 v) {
+WF_INLINE float3 surface_normal(const Scene* scene, const SurfacePoint* p, float3 n, float3 ng, float3 v) {
 #if WF_HAS_NORMAL_MAPS
     __global const TextureRef* ref = texture_slot(scene, p->material, WF_TEXTURE_NORMAL);
     if (ref->texture < 0) return facing(n, ng);

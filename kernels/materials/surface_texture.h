@@ -7,6 +7,7 @@
 #ifndef WF_SURFACE_TEXTURE_H
 #define WF_SURFACE_TEXTURE_H
 
+#include "wavefront/compat.h"
 #include "compiled_features.h"
 #include "scene_view.h"
 #include "materials/texture.h"
@@ -19,12 +20,12 @@ typedef struct SurfacePoint {
     float b1, b2;
 } SurfacePoint;
 
-inline __global const TextureRef* texture_slot(const Scene* scene, uint material, uint slot) {
+WF_INLINE __global const TextureRef* texture_slot(const Scene* scene, uint material, uint slot) {
     return &scene->texture_refs[material * WF_TEXTURE_SLOTS + slot];
 }
 
 /* The slot's texture at the point, or (1, 1, 1, 1) when the slot has none. */
-inline float4 surface_texture(const Scene* scene, const SurfacePoint* p, uint slot) {
+WF_INLINE float4 surface_texture(const Scene* scene, const SurfacePoint* p, uint slot) {
 #if WF_HAS_TEXTURES
     __global const TextureRef* ref = texture_slot(scene, p->material, slot);
     if (ref->texture < 0) return (float4)(1.0f);

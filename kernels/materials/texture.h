@@ -27,6 +27,7 @@
 #ifndef WF_TEXTURE_H
 #define WF_TEXTURE_H
 
+#include "wavefront/compat.h"
 #include "wavefront/scene_types.h"
 #include "materials/srgb_table.h"
 

@@ -8,11 +8,12 @@
 #ifndef WF_VERTEX_COLOR_H
 #define WF_VERTEX_COLOR_H
 
+#include "wavefront/compat.h"
 #include "compiled_features.h"
 #include "scene_view.h"
 #include "materials/surface_texture.h"
 
-inline float4 surface_vertex_color(const Scene* scene, const SurfacePoint* p) {
+WF_INLINE float4 surface_vertex_color(const Scene* scene, const SurfacePoint* p) {
 #if WF_HAS_VERTEX_COLORS
     if (!(scene->materials[p->material].flags & WF_MATERIAL_VERTEX_COLORS)) return (float4)(1.0f);
     __global const TriangleColors* c = &scene->colors[p->triangle];

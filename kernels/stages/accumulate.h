@@ -10,6 +10,7 @@
 #ifndef WF_STAGE_ACCUMULATE_H
 #define WF_STAGE_ACCUMULATE_H
 
+#include "wavefront/compat.h"
 #include "path_view.h"
 #include "film_view.h"
 #include "common/finite.h"
@@ -17,7 +18,7 @@
 
 /* Adds the slot's finished sample to its pixel; returns whether it was
  * dropped as non-finite. */
-inline bool accumulate_path(const PathState* path, const RenderParams* params, uint slot, const FilmBuffers* film) {
+WF_INLINE bool accumulate_path(const PathState* path, const RenderParams* params, uint slot, const FilmBuffers* film) {
     const uint pixel = current_sample(path, params, slot).pixel;
     const float3 radiance = path->radiance[slot].xyz;
     const bool nonfinite = !is_finite3(radiance);
@@ -29,7 +30,7 @@ inline bool accumulate_path(const PathState* path, const RenderParams* params, u
 }
 
 /* The path-length histogram's bucket for a path of `bounces` bounces. */
-inline uint path_length_bucket(uint bounces) {
+WF_INLINE uint path_length_bucket(uint bounces) {
     return bounces == 0u ? 0u : min(32u - clz(bounces), (uint)WF_PATH_LENGTH_BUCKETS - 1u);
 }
 

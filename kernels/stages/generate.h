@@ -8,11 +8,12 @@
 #ifndef WF_STAGE_GENERATE_H
 #define WF_STAGE_GENERATE_H
 
+#include "wavefront/compat.h"
 #include "path_view.h"
 #include "wavefront/scene_types.h"
 #include "common/sample_values.h"
 
-inline bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
+WF_INLINE bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
                                 uint slot) {
     const uint work = path_samples_started(path, slot);
     const PathSample next = nth_sample(params, slot, work);

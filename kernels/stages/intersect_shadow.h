@@ -4,6 +4,7 @@
 #ifndef WF_STAGE_INTERSECT_SHADOW_H
 #define WF_STAGE_INTERSECT_SHADOW_H
 
+#include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
 #include "scene_view.h"
@@ -13,7 +14,7 @@
 
 /* Traces the slot's shadow segment and adds its light if nothing blocks it;
  * returns the queue the path goes to next. */
-inline uint trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+WF_INLINE uint trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                              const FilmBuffers* film) {
     const float4 light = path->shadow_radiance[slot];
     const bool occluded = bvh_any_hit(scene->nodes, scene->triangles, path->shadow_origin[slot].xyz,

@@ -8,12 +8,13 @@
 #ifndef WF_STAGE_ROULETTE_H
 #define WF_STAGE_ROULETTE_H
 
+#include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
 #include "common/sample_values.h"
 
 /* Returns the queue the path goes to next: extension if it survives. */
-inline uint roulette_path(PathState* path, const RenderParams* params, uint slot) {
+WF_INLINE uint roulette_path(PathState* path, const RenderParams* params, uint slot) {
     const uint depth = path_depth(path, slot);
     if (depth < params->roulette_depth) return WF_QUEUE_EXTEND;
     const float3 throughput = path->throughput[slot].xyz;

@@ -20,6 +20,7 @@
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
+#include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
 #include "scene_view.h"
@@ -43,7 +44,7 @@ typedef struct SurfaceHit {
     float area;
 } SurfaceHit;
 
-inline SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, float4 hit, float3 direction) {
+WF_INLINE SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, float4 hit, float3 direction) {
     SurfaceHit s;
     const float3 v0 = triangle_corner(scene->triangles, point->triangle, 0);
     const float3 v1 = triangle_corner(scene->triangles, point->triangle, 1);
@@ -67,14 +68,14 @@ inline SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, floa
 /* The weight of emission that BRDF sampling found, given the density with
  * which light sampling would have found it. A camera ray or a Dirac bounce
  * (pdf_bsdf 0) sees emitters whatever the technique: no light sample could. */
-inline float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_light) {
+WF_INLINE float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_light) {
     if (pdf_bsdf == 0.0f || light_sampling == WF_LIGHT_SAMPLING_BSDF) return 1.0f;
     if (light_sampling == WF_LIGHT_SAMPLING_NEE) return 0.0f;
     return power_heuristic(pdf_bsdf, pdf_light);
 }
 
 /* Radiance the path gathers, into its sum and its bounce layer. */
-inline void add_radiance(PathState* path, const RenderParams* params, const FilmBuffers* film, uint slot, uint pixel,
+WF_INLINE void add_radiance(PathState* path, const RenderParams* params, const FilmBuffers* film, uint slot, uint pixel,
                          uint depth, float3 radiance) {
     path->radiance[slot].xyz += radiance;
     add_to_bounce_layer(params, film, pixel, depth, radiance);
@@ -85,13 +86,13 @@ typedef struct ShadingFrame {
     float3 x, y, z;
 } ShadingFrame;
 
-inline float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
-inline float3 from_local(const ShadingFrame* f, float3 v) { return v.x * f->x + v.y * f->y + v.z * f->z; }
+WF_INLINE float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
+WF_INLINE float3 from_local(const ShadingFrame* f, float3 v) { return v.x * f->x + v.y * f->y + v.z * f->z; }
 
 /* A world direction the BSDF gave or evaluated, with its local z: it must
  * leave on the side of the geometric surface that the shading normal says,
  * else it would cross the surface where the two normals disagree (a leak). */
-inline bool same_side(float3 geometric_normal, float3 w, float local_z) {
+WF_INLINE bool same_side(float3 geometric_normal, float3 w, float local_z) {
     const float g = dot(geometric_normal, w);
     return (g > 0.0f && local_z > 0.0f) || (g < 0.0f && local_z < 0.0f);
 }
@@ -111,7 +112,7 @@ typedef struct ShadeContext {
  * hit, weighed by MIS), then, unless the path ends here, the shading frame,
  * the BSDF's parameters and the light sample: the BSDF core's query.
  * Returns whether the path needs the core. */
-inline bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                           const FilmBuffers* film, ShadeContext* c) {
     const float4 hit = path->hit[slot];
     const int triangle = path_hit_triangle(path, slot);
@@ -195,7 +196,7 @@ inline bool shade_surface(PathState* path, const RenderParams* params, uint slot
  * the path goes to next. A path with a shadow ray waits for it there
  * (intersect_shadow sends it on), so no stage can overwrite the pending ray
  * whatever order the scheduler launches them in. */
-inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
+WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
                           const BsdfAnswer* a) {
     const BsdfQuery* q = &c->query;
     bool shadow_ray = false, continues = false;
@@ -241,7 +242,7 @@ inline uint shade_scatter(PathState* path, const RenderParams* params, uint slot
 
 /* The whole stage for one path: surface, the core at width 1, scatter;
  * returns the queue the path goes to next. */
-inline uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+WF_INLINE uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                        const FilmBuffers* film) {
     ShadeContext c;
     if (!shade_surface(path, params, slot, scene, film, &c)) return WF_QUEUE_FINISHED;

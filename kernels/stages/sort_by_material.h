@@ -15,24 +15,25 @@
 #ifndef WF_STAGE_SORT_BY_MATERIAL_H
 #define WF_STAGE_SORT_BY_MATERIAL_H
 
+#include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
 #include "scene_view.h"
 #include "geometry/triangle_blocks.h"
 
-inline uint material_key(const PathState* path, uint slot, const Scene* scene) {
+WF_INLINE uint material_key(const PathState* path, uint slot, const Scene* scene) {
     const int triangle = path_hit_triangle(path, slot);
     return triangle < 0 ? 0u : (triangle_material(scene->triangles, (uint)triangle) + 1u) % WF_SORT_KEYS;
 }
 
 /* Zeroes the group's local key counts (every work-item calls it). */
-inline void clear_keys(__local uint* keys) {
+WF_INLINE void clear_keys(__local uint* keys) {
     for (uint k = get_local_id(0); k < WF_SORT_KEYS; k += get_local_size(0)) keys[k] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
 }
 
 /* Adds the group's keys to the global histogram (every work-item calls it). */
-inline void count_keys(__local uint* keys, bool active, uint key, __global uint* key_counts) {
+WF_INLINE void count_keys(__local uint* keys, bool active, uint key, __global uint* key_counts) {
     clear_keys(keys);
     if (active) atomic_inc(&keys[key]);
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -41,7 +42,7 @@ inline void count_keys(__local uint* keys, bool active, uint key, __global uint*
 }
 
 /* Key counts to start offsets, in place; one work-item. */
-inline void scan_keys(__global uint* key_counts) {
+WF_INLINE void scan_keys(__global uint* key_counts) {
     uint start = 0u;
     for (uint k = 0; k < WF_SORT_KEYS; ++k) {
         const uint count = key_counts[k];
@@ -51,7 +52,7 @@ inline void scan_keys(__global uint* key_counts) {
 }
 
 /* Writes the slot into its key's range of `sorted` (every work-item calls it). */
-inline void scatter_by_key(__local uint* keys, __local uint* group_start, bool active, uint key, uint slot,
+WF_INLINE void scatter_by_key(__local uint* keys, __local uint* group_start, bool active, uint key, uint slot,
                            __global uint* key_starts, __global uint* sorted) {
     clear_keys(keys);
     const uint at = active ? atomic_inc(&keys[key]) : 0u;
