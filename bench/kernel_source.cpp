@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "base/errors.h"
@@ -26,8 +27,7 @@ namespace wf::bench {
 namespace {
 
 template <class T> T choice(const ChoiceNames& names, const std::string& flag, const std::string& value) {
-    for (size_t i = 0; i < names.size(); ++i)
-        if (names[i] && value == names[i]) return static_cast<T>(i);
+    if (const std::optional<uint32_t> v = choice_value(names, value)) return static_cast<T>(*v);
     throw InputError(flag + " " + value + ": not one of the choices");
 }
 

@@ -79,9 +79,7 @@ std::vector<std::string> names_of(const ChoiceNames& names) {
 }
 
 uint32_t index_of(const ChoiceNames& names, const std::string& name) {
-    for (uint32_t i = 0; i < names.size(); ++i)
-        if (names[i] && name == names[i]) return i;
-    return 0; // unreachable: IsMember has checked the name
+    return choice_value(names, name).value_or(0); // IsMember has checked the name
 }
 
 // Help that ends with its default, the same words for every flag.

@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -47,6 +48,12 @@ static_assert(WF_HEMISPHERE_UNIFORM == 0 && WF_HEMISPHERE_COSINE == 1);
 static_assert(WF_SAMPLER_INDEPENDENT == 0 && WF_SAMPLER_SOBOL == 1);
 
 inline const char* choice_name(const ChoiceNames& names, uint32_t value) { return names.at(value); }
+// The value named `name`, if one is.
+inline std::optional<uint32_t> choice_value(const ChoiceNames& names, const std::string& name) {
+    for (uint32_t i = 0; i < names.size(); ++i)
+        if (names[i] && name == names[i]) return i;
+    return std::nullopt;
+}
 inline const char* integrator_name(Integrator i) { return choice_name(kIntegratorNames, static_cast<uint32_t>(i)); }
 inline const char* schedule_name(Schedule s) { return choice_name(kScheduleNames, static_cast<uint32_t>(s)); }
 inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushNames, static_cast<uint32_t>(p)); }
