@@ -16,7 +16,6 @@
 // Exit codes as for `wavefront`: 0, 1 (the machine failed, or the tracers
 // disagree on more than 0.1% of some set's rays, not counting the shadow
 // segments Embree finds blocked at or past their end), 2 (the input is at fault).
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -39,6 +38,7 @@
 #include "device/layout_check.h"
 #include "device/opencl_device.h"
 #include "integrator/ray_batch.h"
+#include "render/device_renderer.h"
 #include "render/renderer.h"
 #include "device/scene_features.h"
 #include "surface_rays.h"
@@ -154,6 +154,7 @@ struct Report {
     size_t triangles = 0;
     unsigned threads = 0;
     double build_seconds = 0.0, embree_build_seconds = 0.0;
+    size_t traversal_bytes = 0;
     TreeCost tree;
     std::vector<Row> rows;
 };
@@ -170,7 +171,7 @@ void print_table(std::ostream& out, const Report& r) {
         << "device   " << r.device << "; Embree on " << r.threads << " threads\n"
         << std::fixed << std::setprecision(3) << "build    ours " << r.build_seconds << " s (one thread), Embree "
         << r.embree_build_seconds << " s (RTC_BUILD_QUALITY_HIGH, " << r.threads << " threads)\n"
-        << std::setprecision(1) << "tree     " << static_cast<double>(r.tree.bytes) / r.triangles
+        << std::setprecision(1) << "tree     " << static_cast<double>(r.traversal_bytes) / r.triangles
         << " bytes a triangle; a ray through the scene's box meets " << std::setprecision(2) << r.tree.node_visits
         << " nodes and " << r.tree.block_tests << " blocks of four triangles (SAH)\n\n"
         << std::defaultfloat;
@@ -202,7 +203,7 @@ void write_json(const std::string& path, const Report& r) {
         << ",\n  \"device\": " << json_string(r.device) << ",\n  \"features\": " << json_string(r.features)
         << ",\n  \"threads\": " << r.threads << ",\n  \"build_seconds\": " << r.build_seconds
         << ",\n  \"embree_build_seconds\": " << r.embree_build_seconds
-        << ",\n  \"bytes_per_triangle\": " << static_cast<double>(r.tree.bytes) / r.triangles
+        << ",\n  \"bytes_per_triangle\": " << static_cast<double>(r.traversal_bytes) / r.triangles
         << ",\n  \"sah_node_visits\": " << r.tree.node_visits << ",\n  \"sah_block_tests\": " << r.tree.block_tests
         << ",\n  \"sets\": [";
     for (size_t i = 0; i < r.rows.size(); ++i) {
@@ -225,18 +226,18 @@ int run(const Options& options) {
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
     const OpenClDevice device = open_device("cpu");
     check_shared_layouts(device);
-    const auto build_start = std::chrono::steady_clock::now();
-    const Bvh bvh = build_bvh(scene.positions);
-    const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
-    const DeviceScene uploaded = upload_scene(device.context, make_device_scene_data(scene, bvh));
+    const SceneBuild build(scene); // as a render builds it, the BVH's build timed
+    const Bvh& bvh = build.bvh;
+    const DeviceScene uploaded = upload_scene(device.context, build.data);
     Report report;
     const KernelProgram program = build_render_program(device, scene, RenderSettings{}, &report.features);
     const EmbreeScene embree(scene.positions, options.threads);
     report.scene = options.scene;
     report.triangles = scene.triangle_count();
     report.threads = options.threads;
-    report.build_seconds = build_seconds;
+    report.build_seconds = build.seconds;
     report.embree_build_seconds = embree.build_seconds();
+    report.traversal_bytes = build.data.traversal_bytes();
     report.tree = tree_cost(bvh);
     report.device = device.info.name + " (" + std::to_string(device.info.compute_units) + " compute units, " +
                     device.info.platform + " " + device.info.driver + ")";

@@ -2,11 +2,10 @@
 // expected node visits and triangle-block tests of a ray that crosses the
 // scene's box, each node and leaf weighted by its box's area over the scene
 // box's (MacDonald and Booth 1990), as the builder's costs are. The bench
-// reports it beside the build's time and bytes, so that a tree change shows
-// what it did to the tree before what it did to the speed.
+// reports it beside the build's time and bytes
+// (DeviceSceneData::traversal_bytes), so that a tree change shows what it did
+// to the tree before what it did to the speed.
 #pragma once
-
-#include <cstddef>
 
 #include "bvh/bvh_builder.h"
 
@@ -15,7 +14,6 @@ namespace wf::bench {
 struct TreeCost {
     double node_visits = 0.0; // 8-wide node visits a ray, node 0's own not counted
     double block_tests = 0.0; // four-triangle block tests a ray
-    size_t bytes = 0;         // the nodes and the triangle blocks on the device
 };
 
 TreeCost tree_cost(const Bvh& bvh);

@@ -157,6 +157,10 @@ size_t DeviceSceneData::bytes() const {
     return bytes;
 }
 
+size_t DeviceSceneData::traversal_bytes() const {
+    return nodes.size() * sizeof(BvhNode) + triangles.size() * sizeof(TriangleBlock);
+}
+
 size_t DeviceSceneData::largest_buffer_bytes() const {
     size_t largest = 0;
 #define WF_LARGEST(type, name, what) largest = std::max(largest, name.size() * sizeof(type));

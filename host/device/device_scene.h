@@ -31,6 +31,7 @@ struct DeviceSceneData {
 
     size_t bytes() const;                // device memory the buffers will take
     size_t largest_buffer_bytes() const; // the largest single allocation among them
+    size_t traversal_bytes() const;      // the BVH nodes and the triangle blocks: what intersection reads
 };
 
 DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh);

@@ -143,7 +143,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     summary_.bvh_depth = bvh.depth;
     summary_.queue_push = settings.queue_push;
     summary_.local_size = settings.local_size;
-    summary_.traversal_bytes = data.nodes.size() * sizeof(BvhNode) + data.triangles.size() * sizeof(TriangleBlock);
+    summary_.traversal_bytes = data.traversal_bytes();
     summary_.width = size.width;
     summary_.height = size.height;
     summary_.device_bytes = device_scene_.bytes + integrator_->stats().pool_bytes + integrator_->film().bytes();
