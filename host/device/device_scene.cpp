@@ -84,8 +84,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
             for (int axis = 0; axis < 3; ++axis) block.corners[3 * c + axis][lane] = scene.positions[3 * t + c][axis];
         block.light[lane] = -1;
         block.material[lane] = scene.triangle_material[t];
-        d.normals[i] = TriangleNormals{};
-        if (bvh.order[i] == kNoTriangle) continue;
+        if (bvh.order[i] == kNoTriangle) continue; // its normals stay zero, as resize made them
         TriangleNormals& nrm = d.normals[i];
         store3(nrm.n0, scene.normals[3 * t]);
         store3(nrm.n1, scene.normals[3 * t + 1]);

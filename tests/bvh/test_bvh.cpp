@@ -120,7 +120,7 @@ struct BvhScene {
         return wf_device::selected_hit(&selection);
     }
     RayHit brute_force(const Ray& r) const { return select(r, hit_triangles(r), r.t_max); }
-    int32_t light(size_t i) const { return triangles[i / WF_BLOCK_LANES].light[i % WF_BLOCK_LANES]; }
+    int32_t light(size_t i) const { return wf_device::triangle_light(triangles.data(), static_cast<uint32_t>(i)); }
 
     std::vector<glm::vec3> positions;
     Bvh bvh;
