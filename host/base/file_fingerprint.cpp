@@ -10,10 +10,12 @@
 #include <OpenImageIO/hash.h>
 
 #include "base/errors.h"
+#include "base/input_file.h"
 
 namespace wf {
 
 std::string file_fingerprint(const std::string& path) {
+    require_regular_file(path, "file");
     std::ifstream in(path, std::ios::binary);
     const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (!in && !in.eof()) throw InputError(path + ": cannot read");

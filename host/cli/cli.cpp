@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "base/errors.h"
+#include "cli/config_file.h"
 #include "image/image_io.h"
 #include "scene/camera.h"
 
@@ -302,47 +303,6 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->type_name("FILE");
 }
 
-// The file named by render's --config (as `--config FILE` or `--config=FILE`), if any.
-std::string config_path(int argc, const char** argv) {
-    for (int i = 2; i < argc; ++i) {
-        const std::string word = argv[i];
-        if (word == "--config" && i + 1 < argc) return argv[i + 1];
-        if (word.rfind("--config=", 0) == 0) return word.substr(9);
-    }
-    return "";
-}
-
-// A --config file's keys as flags (`spp = 64` is --spp=64, `quiet = true` is
-// --quiet), to be placed before the command line's own, which then win: every
-// render flag keeps the last value given. Keys may sit at the top or under
-// [render]; one the render command does not know is named.
-std::vector<std::string> config_arguments(const CLI::App& render, const std::string& path) {
-    std::vector<CLI::ConfigItem> items;
-    try {
-        items = CLI::ConfigTOML().from_file(path);
-    } catch (const CLI::Error& e) {
-        throw InputError(path + ": cannot read the config file (" + std::string(e.what()) + ")");
-    }
-    std::vector<std::string> arguments;
-    for (const CLI::ConfigItem& item : items) {
-        if (item.name == "++" || item.name == "--") continue; // CLI11's markers of a section's start and end
-        const bool ours = item.parents.empty() || (item.parents.size() == 1 && item.parents[0] == "render");
-        const std::string flag = "--" + item.name;
-        if (!ours || item.name == "config" || !render.get_option_no_throw(flag))
-            throw InputError(path + ": '" + item.fullname() + "' is not a render flag");
-        if (item.inputs.size() != 1) throw InputError(path + ": '" + item.fullname() + "' needs one value");
-        const std::string& value = item.inputs[0];
-        if (render.get_option(flag)->get_expected_min() == 0) { // a flag: true or false
-            if (value != "true" && value != "false")
-                throw InputError(path + ": '" + item.fullname() + "' is true or false, not " + value);
-            if (value == "true") arguments.push_back(flag);
-        } else {
-            arguments.push_back(flag + "=" + value);
-        }
-    }
-    return arguments;
-}
-
 // After parsing: the choices into settings, and the checks between flags.
 void settle_render(RenderOptions& o, const RenderFlags& f) {
     RenderSettings& s = o.settings;
@@ -388,6 +348,36 @@ void declare_cache(CLI::App& cache, CommandLine& cl) {
     clear->callback([&cl] { cl.command = Command::CacheClear; });
 }
 
+// The whole command line, filling `cl` and `flags`; returns the render command.
+CLI::App& declare_app(CLI::App& app, CommandLine& cl, RenderFlags& flags) {
+    app.require_subcommand(1);
+    app.add_flag("--version", "Print the commit, build type and the OpenCL, PoCL and OpenImageIO versions");
+    CLI::App* render = app.add_subcommand("render", "Render a glTF scene and write the image (.exr: linear float "
+                                                    "radiance; .png and other 8-bit formats: sRGB)");
+    declare_render(*render, cl.render, flags);
+    render->callback([&cl] { cl.command = Command::Render; });
+    app.add_subcommand("devices", "List OpenCL platforms and devices")->callback([&cl] { cl.command = Command::Devices; });
+    declare_cache(*app.add_subcommand("cache", "Compiled kernels on disk: warm SCENE... or clear"), cl);
+    return *render;
+}
+
+// Each value a --config file gives passes its flag's check alone, so that a
+// bad one is named with the file and line it came from (config_file.h).
+void check_config_values(const std::string& path, const std::vector<ConfigFlag>& from_file) {
+    CommandLine scratch;
+    RenderFlags scratch_flags;
+    CLI::App app;
+    declare_app(app, scratch, scratch_flags);
+    std::vector<std::string> words{"render", "scene.gltf"};
+    for (const ConfigFlag& f : from_file) words.push_back(f.argument);
+    std::reverse(words.begin(), words.end()); // CLI11 takes them last first
+    try {
+        app.parse(words);
+    } catch (const CLI::ParseError& e) {
+        throw InputError(config_error(path, from_file, parse_error_text(app, e)));
+    }
+}
+
 } // namespace
 
 std::string aov_names(const RenderSettings& s) {
@@ -401,15 +391,8 @@ std::string aov_names(const RenderSettings& s) {
 CommandLine parse_command_line(int argc, const char** argv) {
     CommandLine cl;
     CLI::App app("Renders glTF scenes by wavefront path tracing on OpenCL devices.", "wavefront");
-    app.require_subcommand(1);
-    app.add_flag("--version", "Print the commit, build type and the OpenCL, PoCL and OpenImageIO versions");
-    CLI::App* render = app.add_subcommand("render", "Render a glTF scene and write the image (.exr: linear float "
-                                                    "radiance; .png and other 8-bit formats: sRGB)");
     RenderFlags flags;
-    declare_render(*render, cl.render, flags);
-    render->callback([&] { cl.command = Command::Render; });
-    app.add_subcommand("devices", "List OpenCL platforms and devices")->callback([&] { cl.command = Command::Devices; });
-    declare_cache(*app.add_subcommand("cache", "Compiled kernels on disk: warm SCENE... or clear"), cl);
+    CLI::App* render = &declare_app(app, cl, flags);
 
     // --version alone, before CLI11 asks for a command.
     if (argc == 2 && std::string(argv[1]) == "--version") {
@@ -421,8 +404,9 @@ CommandLine parse_command_line(int argc, const char** argv) {
     std::vector<std::string> words(argv + 1, argv + argc); // CLI11 takes them last first
     if (argc > 1 && std::string(argv[1]) == "render")
         if (const std::string config = config_path(argc, argv); !config.empty()) {
-            const std::vector<std::string> from_file = config_arguments(*render, config);
-            words.insert(words.begin() + 1, from_file.begin(), from_file.end());
+            const std::vector<ConfigFlag> from_file = read_config_flags(*render, config);
+            check_config_values(config, from_file);
+            for (size_t i = 0; i < from_file.size(); ++i) words.insert(words.begin() + 1 + i, from_file[i].argument);
         }
     std::reverse(words.begin(), words.end());
     try {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string_view>
 
+#include "base/input_file.h"
 #include "gltf/gltf_diagnostics.h"
 #include "gltf/gltf_glb.h"
 #include "gltf/gltf_json_scan.h"
@@ -26,18 +27,30 @@ void check_size(const std::string& path, uint64_t size) {
 // External buffers and images must lie in the scene's folder or below it: a
 // file from anywhere must not make the renderer read files elsewhere
 // ("../../etc/passwd" as a buffer URI).
+// Nor may it make the renderer wait: a URI naming a FIFO or a device inside
+// the folder is refused before it is opened (base/input_file.h).
 struct SceneFolder {
     std::filesystem::path root;
     std::string refused; // the first file refused, for the message (tinygltf's own is cut to length)
+    std::string why;     // why it was
 };
+
+// tinygltf's own opens the file to see whether it exists, and opening a FIFO
+// waits for a writer.
+bool file_exists(const std::string& file, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(file, ec);
+}
 
 bool read_inside_folder(std::vector<unsigned char>* out, std::string* error, const std::string& file, void* user) {
     SceneFolder& folder = *static_cast<SceneFolder*>(user);
     std::error_code ec;
     const std::filesystem::path relative = std::filesystem::weakly_canonical(file, ec).lexically_relative(folder.root);
-    if (ec || relative.empty() || *relative.begin() == "..") {
-        if (folder.refused.empty()) folder.refused = file;
-        if (error) *error += "outside the scene's folder";
+    std::string why = ec || relative.empty() || *relative.begin() == ".." ? "which lies outside the scene's folder"
+                                                                           : not_a_regular_file(file);
+    if (!why.empty()) {
+        if (folder.refused.empty()) folder.refused = file, folder.why = why;
+        if (error) *error += why;
         return false;
     }
     return tinygltf::ReadWholeFile(out, error, file, nullptr);
@@ -84,9 +97,7 @@ std::string uri_decode(const std::string& uri) {
 }
 
 std::vector<unsigned char> read_gltf_file(const std::string& path) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        fail(path, std::filesystem::exists(path, error) ? "not a regular file" : "no such file");
+    if (const std::string why = not_a_regular_file(path); !why.empty()) fail(path, why);
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     const std::streamoff size = in ? std::streamoff(in.tellg()) : -1;
     if (size < 0) fail(path, "cannot read file");
@@ -113,7 +124,7 @@ tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned 
     parser.SetImageLoader(keep_image_encoded, nullptr);
     std::error_code ec;
     SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), ec), {}};
-    parser.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_inside_folder,
+    parser.SetFsCallbacks({&file_exists, &tinygltf::ExpandFilePath, &read_inside_folder,
                            &tinygltf::WriteWholeFile, &folder});
     tinygltf::Model model;
     std::string error;
@@ -129,8 +140,7 @@ tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned 
         error = e.what();
     }
     // Whether or not tinygltf went on without it (it does for images).
-    if (!folder.refused.empty())
-        fail(path, "refers to " + folder.refused + ", which lies outside the scene's folder");
+    if (!folder.refused.empty()) fail(path, "refers to " + folder.refused + ", " + folder.why);
     if (!parsed) {
         const std::string detail = one_line(error);
         fail(path, std::string(binary ? "cannot load GLB" : "cannot load glTF") +

@@ -12,6 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "base/errors.h"
+#include "base/input_file.h"
 #include "base/output_files.h"
 
 namespace wf {
@@ -53,6 +54,7 @@ bool holds_float_radiance(const std::string& path) {
 }
 
 Image read_image(const std::string& path) {
+    require_regular_file(path, "image");
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();
@@ -123,6 +125,7 @@ void write_image(const std::string& path, const Image& image, const ImageMetadat
 }
 
 ChannelImage read_channels(const std::string& path) {
+    require_regular_file(path, "image");
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();

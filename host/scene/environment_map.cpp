@@ -12,6 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "base/errors.h"
+#include "base/input_file.h"
 
 namespace wf {
 namespace {
@@ -96,6 +97,7 @@ EnvironmentMap make_environment(const Image& image, float scale, float rotate_de
 }
 
 EnvironmentMap load_environment(const std::string& path, float scale, float rotate_degrees) {
+    require_regular_file(path, "environment map");
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
         std::string why = OIIO::geterror();

@@ -1,6 +1,7 @@
 // test_cli.cpp — the `wavefront` executable as a user meets it: exit codes,
 // one-line errors that name the thing at fault, and the files it writes.
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,10 +97,66 @@ TEST_F(Cli, AConfigFileHoldsFlagsAndTheCommandLineWins) {
     EXPECT_EQ(quiet.out + quiet.err, ""); // --quiet: errors only
 
     write("unknown.toml", "frobnicate = 1\n");
-    expect_rejected("render " + kCornell + " --config " + path("unknown.toml"), "unknown.toml: 'frobnicate' is not a render flag");
+    expect_rejected("render " + kCornell + " --config " + path("unknown.toml"), "unknown.toml:1: 'frobnicate' is not a render flag");
     write("bad.toml", "spp = 0\n");
     expect_rejected("render " + kCornell + " --config " + path("bad.toml"), "--spp: 0 is not in");
     expect_rejected("render " + kCornell + " --config " + path("missing.toml"), "missing.toml");
+}
+
+// A config file that is not one, or not one a person wrote, is refused in one
+// line of at most 200 characters that names the file and the line at fault.
+TEST_F(Cli, ConfigErrorsAreOneShortLineNamingTheLine) {
+    const auto expect_line = [&](const std::string& name, const std::string& text, const std::string& names) {
+        write(name, text);
+        const test::ProcessResult r = run("render " + kCornell + " --config " + path(name) + " -o " + path("c.png"));
+        EXPECT_EQ(r.exit_code, 2) << name << ": " << r.err;
+        EXPECT_NE(r.err.find(path(name) + names), std::string::npos) << name << ": '" << r.err << "'";
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_LE(r.err.size(), std::string("error: \n").size() + 200) << r.err;
+    };
+    expect_line("png.toml", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), ":2: not a text file");
+    expect_line("words.toml", "width = 16\nthis is not toml\n", ":2: 'this is not toml' is not 'name = value'");
+    expect_line("deep.toml", "spp = 2\nwidth = " + std::string(5000, '[') + std::string(5000, ']') + "\n",
+                ":2: 'width' takes one value, not an array");
+    expect_line("long.toml", "spp = " + std::string(20000, '9') + "\n", ":1: render: --spp: ");
+    expect_line("open.toml", "output = \"x.png\n", ":1: a quote (\") is not closed");
+    expect_line("empty.toml", "\n\nspp =\n", ":3: 'spp' has no value");
+    expect_line("twice.toml", "spp = 2\n[render]\nspp = 3\n", ":3: 'render.spp' gives --spp again (first on line 1)");
+    expect_line("value.toml", "width = 16\n\n# samples\nspp = 0\n", ":4: render: --spp: 0 is not in");
+    EXPECT_FALSE(fs::exists(path("c.png")));
+}
+
+// Only regular files are read: a FIFO, a device or a folder where a scene,
+// one of its buffers, a config, a reference, an environment map or a partial
+// render should be is refused at once, without opening it (opening a FIFO
+// waits for a writer forever).
+TEST_F(Cli, WhatIsNotARegularFileIsRefusedAtOnce) {
+    ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+    fs::create_directories(dir_ / "folder.gltf");
+    const auto expect_refused = [&](const std::string& args, const std::string& names) {
+        const test::ProcessResult r = test::run_wavefront(args + " -o " + path("out.exr"), dir_.string(), "", 60);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err; // 124: it waited
+        EXPECT_NE(r.err.find(names), std::string::npos) << args << ": '" << r.err << "' should name '" << names << "'";
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": '" << r.err << "'";
+    };
+    const std::string small = "render " + kCornell + " --width 16 --spp 1 ";
+    expect_refused("render " + path("fifo"), "fifo: a FIFO, not a regular file");
+    expect_refused("render " + path("folder.gltf"), "folder.gltf: a directory, not a regular file");
+    expect_refused("render /dev/zero", "/dev/zero: a device, not a regular file");
+    expect_refused(small + "--config " + path("fifo"), "fifo: config file: a FIFO");
+    expect_refused(small + "--reference " + path("fifo"), "fifo: image: a FIFO");
+    expect_refused(small + "--env " + path("fifo"), "fifo: environment map: a FIFO");
+    expect_refused(small + "--resume " + path("fifo"), "fifo: image: a FIFO");
+
+    fs::create_directories(dir_ / "scene");
+    ASSERT_EQ(::mkfifo(path("scene/data.bin").c_str(), 0600), 0);
+    write("scene/pipe.gltf",
+          R"({"asset":{"version":"2.0"},"buffers":[{"uri":"data.bin","byteLength":36}],)"
+          R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+          R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}],)"
+          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
+    expect_refused("render " + path("scene/pipe.gltf"), "data.bin, a FIFO, not a regular file");
+    EXPECT_FALSE(fs::exists(path("out.exr")));
 }
 
 // PoCL offers no device when it cannot make its kernel cache: the error says

@@ -91,10 +91,12 @@ std::string read_file(const std::string& path) {
     return s.str();
 }
 
-ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env) {
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env,
+                            int limit_s) {
     const std::string out = scratch_dir + "/stdout.txt", err = scratch_dir + "/stderr.txt";
-    const std::string command = (env.empty() ? "" : "env " + env + " ") + "'" + WF_BINARY + "' " + args + " > '" +
-                                out + "' 2> '" + err + "'";
+    const std::string command = (env.empty() ? "" : "env " + env + " ") +
+                                (limit_s > 0 ? "timeout " + std::to_string(limit_s) + " " : "") + "'" + WF_BINARY +
+                                "' " + args + " > '" + out + "' 2> '" + err + "'";
     const int status = std::system(command.c_str());
     return ProcessResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
 }

@@ -65,8 +65,11 @@ struct ProcessResult {
 
 // Runs the `wavefront` executable with `args` (shell words), as a user would,
 // capturing its output in files under `scratch_dir`; `env` (NAME=value words)
-// is added to its environment.
-ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env = "");
+// is added to its environment. With `limit_s`, a run still going after that
+// many seconds is killed and exits 124 (timeout(1)): for tests of inputs that
+// could make it wait forever, which then fail instead of hanging the suite.
+ProcessResult run_wavefront(const std::string& args, const std::string& scratch_dir, const std::string& env = "",
+                            int limit_s = 0);
 
 // The same, with stdout and stderr both on one pseudo-terminal, as a user at a
 // terminal sees them: `out` holds what the terminal received, `err` is empty.
