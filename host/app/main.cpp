@@ -3,6 +3,7 @@
 //   build) · 2 the input is at fault (a scene, a flag, an output path) ·
 //   128 + signal: a render stopped by Ctrl-C or SIGTERM, its image written.
 // Every failure is one line on stderr that names the thing at fault.
+#include <csignal>
 #include <iostream>
 
 #include "base/errors.h"
@@ -13,6 +14,11 @@
 #include "cli/version_text.h"
 
 int main(int argc, const char** argv) {
+    // A reader that goes away (`| head -1`) must not cost the render: with
+    // SIGPIPE ignored, a write to the closed pipe fails quietly and the streams
+    // drop what follows, while the images are still written and the exit code
+    // is the render's own.
+    std::signal(SIGPIPE, SIG_IGN);
     try {
         const wf::CommandLine cl = wf::parse_command_line(argc, argv);
         switch (cl.command) {

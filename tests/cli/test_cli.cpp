@@ -159,6 +159,20 @@ TEST_F(Cli, WhatIsNotARegularFileIsRefusedAtOnce) {
     EXPECT_FALSE(fs::exists(path("out.exr")));
 }
 
+// A reader that goes away before the render ends (`| head -1`) costs neither
+// the image nor the exit code, on stdout or on stderr.
+TEST_F(Cli, AClosedPipeCostsNothing) {
+    const std::string render = "'" WF_BINARY "' render " + kCornell + " --width 16 --spp 1 -o " + path("x.png");
+    for (const std::string redirect : {"", " 2>&1 >/dev/null"}) {
+        fs::remove(path("x.png"));
+        // `true` exits at once: every write to the pipe finds it closed.
+        const std::string command = "{ " + render + redirect + "; echo $? > " + path("status") + "; } | true";
+        ASSERT_EQ(std::system(("sh -c \"" + command + "\"").c_str()), 0) << command;
+        EXPECT_EQ(test::read_file(path("status")), "0\n") << command; // 141: killed by SIGPIPE
+        EXPECT_TRUE(fs::exists(path("x.png"))) << command;
+    }
+}
+
 // PoCL offers no device when it cannot make its kernel cache: the error says
 // so, instead of blaming the driver.
 TEST_F(Cli, AnUnwritableHomeIsNamedNotABrokenDriver) {
