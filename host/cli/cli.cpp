@@ -45,17 +45,21 @@ CLI::Validator whole_number(uint64_t lo, uint64_t hi) {
         "in " + range);
 }
 
-// A finite number; `positive`: above zero.
-CLI::Validator finite_number(bool positive) {
+// Where a number's range starts.
+enum class Lowest { Any, Zero, AboveZero };
+
+// A finite number, at or above its lowest.
+CLI::Validator finite_number(Lowest lowest) {
     return CLI::Validator(
-        [positive](std::string& text) -> std::string {
+        [lowest](std::string& text) -> std::string {
             std::istringstream in(text);
             double value = 0.0;
             if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
-            if (positive && !(value > 0.0)) return text + " is not above 0";
+            if (lowest == Lowest::AboveZero && !(value > 0.0)) return text + " is not above 0";
+            if (lowest == Lowest::Zero && !(value >= 0.0)) return text + " is below 0";
             return "";
         },
-        positive ? "> 0" : "");
+        lowest == Lowest::AboveZero ? "> 0" : lowest == Lowest::Zero ? ">= 0" : "");
 }
 
 // A probability above zero: a number in (0, 1].
@@ -144,7 +148,7 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--exposure", o.exposure,
                       with_default("Scale an 8-bit output (.png, .jpg) by 2^EV before the sRGB curve; a float "
                                    "output keeps radiance", 0))
-        ->check(finite_number(false))
+        ->check(finite_number(Lowest::Any))
         ->type_name("EV");
     render.add_flag("--half", o.half,
                     with_default("Store a float output's channels as 16-bit halves (a partial render stays "
@@ -231,17 +235,18 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                            ->type_name("FILE")
                            ->group(sampling);
     render.add_option("--env-uniform", o.environment_uniform,
-                      with_default("Environment light of the same radiance L from every direction", "none"))
-        ->check(finite_number(true))
+                      with_default("Environment light of the same radiance L from every direction; 0: no "
+                                   "environment, not even the white one an unlit scene gets", "none"))
+        ->check(finite_number(Lowest::Zero))
         ->excludes(env)
         ->type_name("L")
         ->group(sampling);
     render.add_option("--env-rotate", o.environment_rotate, with_default("Turn --env about the up (+y) axis, degrees", 0))
-        ->check(finite_number(false))
+        ->check(finite_number(Lowest::Any))
         ->needs(env)
         ->group(sampling);
     render.add_option("--env-scale", o.environment_scale, with_default("Multiply --env's radiance", 1))
-        ->check(finite_number(true))
+        ->check(finite_number(Lowest::AboveZero))
         ->needs(env)
         ->group(sampling);
     add_cache_dir(render, o.cache_dir);
@@ -269,17 +274,17 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->group(error);
     render.add_option("--report-every", o.progress.report_every,
                       with_default("A checkpoint every this many seconds", "at each doubling of spp"))
-        ->check(finite_number(true))
+        ->check(finite_number(Lowest::AboveZero))
         ->type_name("SECONDS")
         ->group(error);
     render.add_option("--time", o.progress.time_budget,
                       with_default("Stop after this many seconds; then --spp, if given, is a cap", "none"))
-        ->check(finite_number(true))
+        ->check(finite_number(Lowest::AboveZero))
         ->type_name("SECONDS")
         ->group(error);
     render.add_option("--target-error", o.progress.target_relmse,
                       with_default("Stop once the estimated relMSE is below X, checked from 16 spp on", "none"))
-        ->check(finite_number(true))
+        ->check(finite_number(Lowest::AboveZero))
         ->type_name("X")
         ->group(error);
 
@@ -287,7 +292,7 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--checkpoint-every", o.checkpoint_every,
                       with_default("Write the render so far to OUT.partial.exr this often, atomically (Ctrl-C "
                                    "writes it too)", "never"))
-        ->check(finite_number(true))
+        ->check(finite_number(Lowest::AboveZero))
         ->type_name("SECONDS")
         ->group(long_renders);
     render.add_option("--resume", o.resume,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@ struct RenderOptions {
     std::string environment;        // an equirectangular map; empty: none
     float environment_rotate = 0.0f; // degrees about +y
     float environment_scale = 1.0f;
-    float environment_uniform = 0.0f; // > 0: a constant environment of this radiance instead
+    std::optional<float> environment_uniform; // a constant environment of this radiance instead; 0: none at all
     RenderSettings settings;
     ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
     std::string reference;    // an image to report the error against

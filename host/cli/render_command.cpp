@@ -92,7 +92,7 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size) {
             {"env", o.environment.empty() ? "none" : o.environment},
             {"env-rotate", std::to_string(o.environment_rotate)},
             {"env-scale", std::to_string(o.environment_scale)},
-            {"env-uniform", std::to_string(o.environment_uniform)},
+            {"env-uniform", o.environment_uniform ? std::to_string(*o.environment_uniform) : "none"},
             {"aov", aov_names(s)},
             {"version", WF_VERSION}};
 }
@@ -156,8 +156,9 @@ void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& 
         for (const std::string& w : map->warnings) log << "warning: " << w << "\n"; // each names the file
         scene.environment = std::move(map);
     }
-    if (options.environment_uniform > 0.0f)
-        scene.environment = std::make_shared<EnvironmentMap>(constant_environment(options.environment_uniform));
+    if (options.environment_uniform == 0.0f) return; // a black world, as asked, whatever lights the scene has
+    if (options.environment_uniform)
+        scene.environment = std::make_shared<EnvironmentMap>(constant_environment(*options.environment_uniform));
     light_unlit_scene(scene);
 }
 

@@ -502,6 +502,12 @@ TEST_F(Cli, EnvironmentFlagsLightAScene) {
     const test::ProcessResult uniform = run(small + "--env-uniform 0.5 -o " + path("uniform.exr"));
     ASSERT_EQ(uniform.exit_code, 0) << uniform.err;
     EXPECT_NE(uniform.out.find("an environment"), std::string::npos) << uniform.out;
+    // --env-uniform 0 asks for no environment at all: the unlit box stays black.
+    const test::ProcessResult black = run(small + "--env-uniform 0 -o " + path("black.exr"));
+    ASSERT_EQ(black.exit_code, 0) << black.err;
+    EXPECT_EQ(black.err.find("uniform white"), std::string::npos) << black.err;
+    for (float v : read_image(path("black.exr")).rgb) ASSERT_EQ(v, 0.0f);
+    expect_rejected(small + "--env-uniform -1 -o " + path("x.exr"), "--env-uniform: -1 is below 0");
     expect_rejected(small + "--env " + path("sky.exr") + " --env-uniform 1 -o " + path("x.exr"), "--env-uniform");
     expect_rejected(small + "--env " + path("missing.exr") + " -o " + path("x.exr"), "missing.exr");
     expect_rejected(small + "--env-scale 2 -o " + path("x.exr"), "--env");
