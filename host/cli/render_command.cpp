@@ -203,6 +203,12 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
             throw InputError(options.reference + ": the reference is " + std::to_string(reference->width) + "x" +
                              std::to_string(reference->height) + " but the render is " + std::to_string(size.width) +
                              "x" + std::to_string(size.height));
+        if (reference->stored.levels > 0) {
+            // Assumed written as this command would write an 8-bit image.
+            reference->stored.exposure = options.exposure;
+            log << "note: " << options.reference << " holds " << reference->stored.levels + 1
+                << " levels a channel: the render is compared with it clipped to [0, 1] and quantised as it is\n";
+        }
     }
 
     const std::vector<OpenClDevice> devices = open_devices(options.device);

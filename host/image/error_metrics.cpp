@@ -1,14 +1,24 @@
 // error_metrics.cpp — sums in double over every pixel and channel.
 #include "image/error_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "base/errors.h"
+#include "image/image_io.h"
 
 namespace wf {
 namespace {
 constexpr double kRelativeEpsilon = 0.01;
+}
+
+float as_stored(float linear, const Quantisation& q) {
+    if (q.levels == 0) return linear;
+    const float levels = float(q.levels);
+    const float x = std::clamp(std::isnan(linear) ? 0.0f : linear * std::exp2(q.exposure), 0.0f, 1.0f);
+    if (!q.srgb) return std::round(x * levels) / levels;
+    return srgb_decode(std::round(srgb_encode(x) * levels) / levels);
 }
 
 ErrorMetrics compare_images(const Image& image, const Image& reference) {
@@ -18,7 +28,7 @@ ErrorMetrics compare_images(const Image& image, const Image& reference) {
     ErrorMetrics e;
     const size_t n = image.rgb.size();
     for (size_t i = 0; i < n; ++i) {
-        const double x = image.rgb[i], y = reference.rgb[i], d = x - y;
+        const double x = as_stored(image.rgb[i], reference.stored), y = reference.rgb[i], d = x - y;
         e.mse += d * d;
         e.relmse += d * d / (y * y + kRelativeEpsilon);
         e.mae += std::fabs(d);

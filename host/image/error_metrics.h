@@ -17,8 +17,13 @@ struct ErrorMetrics {
     double mae = 0.0;
 };
 
-// Throws InputError when the sizes differ.
+// Throws InputError when the sizes differ. Against a quantised reference (an
+// 8-bit PNG, say), `image` is first stored as the reference was: an identical
+// render then has no error, instead of the error of the clipping.
 ErrorMetrics compare_images(const Image& image, const Image& reference);
+
+// `linear` as it reads back from a file quantised as `q`.
+float as_stored(float linear, const Quantisation& q);
 
 double estimate_relmse(const Image& mean, const Image& variance_of_mean);
 

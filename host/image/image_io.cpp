@@ -63,7 +63,11 @@ Image read_image(const std::string& path) {
     image.rgb.resize(size_t{image.width} * image.height * 3);
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
         throw InputError(path + ": cannot read (" + in->geterror() + ")");
-    if (holds_srgb(spec))
+    if (!spec.format.is_floating_point()) {
+        image.stored.levels = uint32_t((uint64_t{1} << (8 * spec.format.size())) - 1);
+        image.stored.srgb = holds_srgb(spec);
+    }
+    if (image.stored.srgb)
         for (float& v : image.rgb) v = srgb_decode(v);
     return image;
 }
