@@ -6,5 +6,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=bench/results
 mkdir -p "$out"
-build/wavefront render scenes/cornell-box.gltf --width 512 --height 512 --spp 256 \
+build/wavefront render scenes/cornell-box.gltf --width 512 --height 512 --spp 256 --max-depth unlimited \
     -o "$out/cornell-512-256spp.png" "$@" | tee "$out/cornell-512-256spp.txt"

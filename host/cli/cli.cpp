@@ -45,6 +45,18 @@ CLI::Validator whole_number(uint64_t lo, uint64_t hi) {
         "in " + range);
 }
 
+// A bounce count in [0, hi], or `unlimited` (WF_UNLIMITED_DEPTH).
+CLI::Validator depth_limit(uint32_t hi) {
+    const CLI::Validator number = whole_number(0, hi);
+    return CLI::Validator(
+        [number](std::string& text) -> std::string {
+            if (text != "unlimited") return number(text);
+            text = std::to_string(WF_UNLIMITED_DEPTH);
+            return "";
+        },
+        "in 0 to " + std::to_string(hi) + ", or unlimited");
+}
+
 // Where a number's range starts.
 enum class Lowest { Any, Zero, AboveZero };
 
@@ -161,8 +173,9 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--height", o.height, with_default("Image height", "from the width and the camera's aspect"))
         ->check(whole_number(1, kMaxSide));
     render.add_option("--max-depth", s.max_depth,
-                      with_default("Bounces per path; 1 is direct lighting only", "unlimited, ended by roulette"))
-        ->check(whole_number(0, 1u << 20));
+                      with_default("Bounces per path; 1 is direct lighting only, unlimited leaves it to roulette",
+                                   s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : as_text(s.max_depth)))
+        ->transform(depth_limit(1u << 20));
     render.add_option("--roulette-depth", s.roulette_depth,
                       with_default("Bounces after which Russian roulette may end a path", s.roulette_depth))
         ->check(whole_number(1, 1u << 20));

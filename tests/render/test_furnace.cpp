@@ -130,6 +130,7 @@ TEST_P(WhiteFurnace, ASphereReturnsTheSkyEverywhereTheRimIncluded) {
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
 
     RenderSettings settings;
+    settings.max_depth = WF_UNLIMITED_DEPTH; // every bounce counts where energy is measured
     settings.spp = 32;
     settings.seed = 7;
     // The whole sphere, and the limb seen through a narrow lens: the view

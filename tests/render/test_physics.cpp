@@ -29,6 +29,7 @@ constexpr double kPi = 3.14159265358979323846;
 double expect_furnace_radiance(float albedo, RenderSettings settings, bool heavy_tailed = false) {
     const float emission = 1.0f;
     const Scene scene = test::furnace_box(albedo, emission);
+    settings.max_depth = WF_UNLIMITED_DEPTH; // a bound would cut ρ^256 of the answer: 8% at ρ = 0.99
     settings.spp = 64;
     settings.seed = 7;
     const RenderOutput out = render_scene(test::cpu_device(), scene,
@@ -76,6 +77,29 @@ TEST(Furnace, RouletteCappedBelowTheAlbedoEndsPathsSoonerWithoutBias) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Albedo, Furnace, ::testing::Values(0.5f, 0.9f));
+
+// No path decides how long a render takes: by default a path ends after
+// kDefaultMaxDepth bounces even where roulette would let it go on (here a
+// furnace of albedo 0.9999, where it survives ~10^4 bounces); unlimited, as
+// asked for, it goes on.
+TEST(Furnace, PathsEndAtTheDefaultBoundAndGoOnWhenUnlimited) {
+    const Scene scene = test::furnace_box(0.9999f, 1.0f);
+    const SceneCamera camera = test::camera_looking(glm::vec3(0.0f), {0, 0, -1}, {0, 1, 0}, 1.2f);
+    const auto longest_bounces = [&](uint32_t max_depth) {
+        RenderSettings settings;
+        if (max_depth) settings.max_depth = max_depth;
+        settings.spp = 4;
+        const RenderOutput out = render_scene(test::cpu_device(), scene, camera, ImageSize{8, 8}, settings);
+        // Buckets 0, 1, 2-3, 4-7, ...: bucket b >= 1 starts at 2^(b-1) bounces.
+        const auto& lengths = out.summary.stats.path_lengths;
+        size_t last = 0;
+        for (size_t b = 0; b < lengths.size(); ++b)
+            if (lengths[b]) last = b;
+        return last == 0 ? 0u : 1u << (last - 1);
+    };
+    EXPECT_EQ(longest_bounces(0), kDefaultMaxDepth);
+    EXPECT_GE(longest_bounces(WF_UNLIMITED_DEPTH), 2048u);
+}
 
 // With no bounce, a pixel that sees only the light holds exactly its radiance,
 // and a pixel that sees a wall holds exactly nothing.
