@@ -301,7 +301,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     }
 
     summary.scene = options.scene;
-    summary.output = options.output;
+    if (hooks.write_image) summary.output = options.output;
     summary.times.load = load_seconds;
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, summary);
     if (hooks.film) *hooks.film = film;

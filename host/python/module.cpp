@@ -17,6 +17,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "base/errors.h"
 #include "cli/cli.h"
@@ -105,13 +106,18 @@ private:
 
 PyResult render(py::object scene, std::optional<py::function> progress, const py::kwargs& options) {
     const bool loaded = py::isinstance<PyScene>(scene);
-    const std::string path = loaded ? scene.cast<const PyScene&>().path : py::str(scene).cast<std::string>();
+    const std::string path = loaded ? scene.cast<const PyScene&>().path
+                                    : py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
     RenderOptions parsed = parse_render(path, options);
     const bool write_image = options.contains("output") || options.contains("o");
     if (!options.contains("quiet")) parsed.quiet = true; // no table, report or progress line on the terminal
-    if (loaded && parsed.camera != scene.cast<const PyScene&>().camera)
-        throw InputError("render: camera " + std::to_string(parsed.camera) + " is not the one " + path +
-                         " was loaded with; load it again with that camera");
+    if (loaded) { // the scene's camera, unless another is asked for
+        const int camera = scene.cast<const PyScene&>().camera;
+        if (!options.contains("camera")) parsed.camera = camera;
+        if (parsed.camera != camera)
+            throw InputError("render: camera " + std::to_string(parsed.camera) + " is not the one " + path +
+                             " was loaded with (" + std::to_string(camera) + "); load it again with that camera");
+    }
 
     PyResult result;
     FilmReadout film;
@@ -182,6 +188,7 @@ py::dict stages(const RenderStats& s) {
 PYBIND11_MODULE(wavefront, m) {
     using namespace wf;
     m.doc() = "Wavefront path tracing on OpenCL devices: render glTF scenes and read their statistics.";
+    m.attr("__version__") = WF_VERSION;
 
     static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
     static py::exception<DeviceError> device_error(m, "DeviceError", PyExc_RuntimeError);
@@ -223,7 +230,8 @@ PYBIND11_MODULE(wavefront, m) {
         });
     m.def(
         "load_scene",
-        [](const std::string& path, int camera) {
+        [](const std::filesystem::path& file, int camera) {
+            const std::string path = file.string();
             return PyScene{path, camera, load_gltf(path, LoadOptions{camera})};
         },
         py::arg("path"), py::arg("camera") = -1, "Loads a .gltf or .glb file; camera=-1 is its first camera");
@@ -240,7 +248,13 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("pool_size", &RenderStats::pool_size)
         .def_readonly("pool_bytes", &RenderStats::pool_bytes)
         .def_property_readonly("integrator", [](const RenderStats& s) { return integrator_name(s.integrator); })
-        .def_property_readonly("schedule", [](const RenderStats& s) { return schedule_name(s.schedule); })
+        .def_property_readonly(
+            "schedule",
+            [](const RenderStats& s) -> std::optional<std::string> {
+                if (s.integrator == Integrator::Megakernel) return std::nullopt; // it has no stages to order
+                return std::string(schedule_name(s.schedule));
+            },
+            "the wavefront's launch order; None for the megakernel")
         .def_property_readonly("kernel_seconds", &RenderStats::kernel_seconds)
         .def_property_readonly("pool_occupancy", &RenderStats::pool_occupancy)
         .def_property_readonly("stages", &stages, "per stage kernel: launches and seconds (profiling events)")
@@ -251,6 +265,14 @@ PYBIND11_MODULE(wavefront, m) {
                                "one row per read of the counters, as counter_read_columns names them: the "
                                "queues' lengths as read, then closest rays, shadow rays and samples since the "
                                "previous read")
+        .def("__repr__",
+             [](const RenderStats& s) {
+                 std::ostringstream text;
+                 text << "<wavefront.Stats " << integrator_name(s.integrator)
+                      << (s.integrator == Integrator::Megakernel ? "" : std::string(", ") + schedule_name(s.schedule))
+                      << ": " << s.samples << " samples in " << s.seconds << " s, " << s.iterations << " iterations>";
+                 return text.str();
+             })
         .def_property_readonly_static("counter_read_columns", [](py::object) {
             return std::vector<std::string>(CounterSnapshot::kColumns.begin(), CounterSnapshot::kColumns.end());
         });
@@ -266,7 +288,14 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("seconds", &Checkpoint::seconds)
         .def_readonly("spp", &Checkpoint::spp)
         .def_property_readonly("relmse", [](const Checkpoint& c) { return c.error ? std::optional<double>(c.error->relmse) : std::nullopt; })
-        .def_readonly("relmse_estimate", &Checkpoint::relmse_estimate);
+        .def_readonly("relmse_estimate", &Checkpoint::relmse_estimate)
+        .def("__repr__", [](const Checkpoint& c) {
+            std::ostringstream text;
+            text << "<wavefront.Checkpoint " << c.spp << " spp at " << c.seconds << " s";
+            if (c.error) text << ", relMSE " << c.error->relmse;
+            if (c.relmse_estimate) text << ", estimated relMSE " << *c.relmse_estimate;
+            return text.str() + ">";
+        });
 
     py::class_<PyResult>(m, "Result", "A finished render")
         .def_readonly("image", &PyResult::image, "linear radiance, height x width x 3, float32")
@@ -287,10 +316,15 @@ PYBIND11_MODULE(wavefront, m) {
             std::ostringstream out;
             print_report(out, r.summary);
             return out.str();
-        }, "the command line's closing report");
+        }, "the command line's closing report")
+        .def("__repr__", [](const PyResult& r) {
+            return "<wavefront.Result " + std::to_string(r.summary.width) + " x " + std::to_string(r.summary.height) +
+                   ", " + std::to_string(r.summary.spp) + " spp on " + r.summary.device + ">";
+        });
 
     m.def(
-        "read_image", [](const std::string& path) { return to_array(read_image(path)); }, py::arg("path"),
+        "read_image", [](const std::filesystem::path& path) { return to_array(read_image(path.string())); },
+        py::arg("path"),
         "An image file's RGB as linear float32 (8-bit formats are decoded from sRGB), height x width x 3");
 
     m.def("render", &render, py::arg("scene"), py::arg("progress") = py::none(),

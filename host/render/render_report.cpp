@@ -37,7 +37,7 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     }
     out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp";
     if (s.resumed_from_spp) out << " (resumed from " << s.resumed_from_spp << ")";
-    out << " -> " << s.output << "\n";
+    out << (s.output.empty() ? "" : " -> " + s.output) << "\n"; // none where no file was written (Python)
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes
         << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s"
         << (s.kernels_from_cache ? " (from cache)" : "") << ", render "

@@ -6,6 +6,7 @@ and Ctrl-C that stops the render cleanly and raises KeyboardInterrupt.
 Run by ctest (Python.Module) with build/python on PYTHONPATH."""
 
 import os
+import pathlib
 import signal
 import subprocess
 import sys
@@ -110,6 +111,38 @@ def test_progress_is_reported_and_its_errors_stop_the_render(cache):
         raise ZeroDivisionError("from the callback")
     with pytest.raises(ZeroDivisionError, match="from the callback"):
         wavefront.render(CORNELL, progress=fail, cache_dir=cache, **SMALL)
+
+
+def test_paths_may_be_path_objects(cache):
+    path = pathlib.Path(CORNELL)
+    assert wavefront.load_scene(path).triangles == 32
+    with tempfile.TemporaryDirectory() as folder:
+        out = pathlib.Path(folder) / "out.exr"
+        result = wavefront.render(path, output=out, cache_dir=pathlib.Path(cache), **SMALL)
+        assert np.array_equal(wavefront.read_image(out), result.image)
+
+
+def test_a_loaded_scene_renders_through_the_camera_it_was_loaded_with(cache):
+    scene = wavefront.load_scene(CORNELL, camera=0)
+    assert np.array_equal(wavefront.render(scene, cache_dir=cache, **SMALL).image,
+                          wavefront.render(CORNELL, camera=0, cache_dir=cache, **SMALL).image)
+    with pytest.raises(wavefront.InputError, match="camera 1 is not the one .* was loaded with \\(0\\)"):
+        wavefront.render(scene, camera=1, cache_dir=cache, **SMALL)
+
+
+def test_version_and_what_objects_print(cache):
+    binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
+    cli = subprocess.run([binary, "--version"], check=True, capture_output=True, text=True).stdout
+    assert cli.splitlines()[0] == "wavefront " + wavefront.__version__
+    result = wavefront.render(CORNELL, cache_dir=cache, **SMALL)
+    assert repr(result).startswith("<wavefront.Result 48 x 36, 4 spp on ")
+    assert repr(result.stats).startswith("<wavefront.Stats wavefront, group: 6912 samples in ")
+    assert repr(result.checkpoints[-1]).startswith("<wavefront.Checkpoint 4 spp at ")
+    assert " -> " not in result.report  # no file was written
+    assert result.stats.schedule == "group"
+    megakernel = wavefront.render(CORNELL, integrator="megakernel", cache_dir=cache, **SMALL)
+    assert megakernel.stats.schedule is None and megakernel.stats.integrator == "megakernel"
+    assert repr(megakernel.stats).startswith("<wavefront.Stats megakernel: ")
 
 
 # Ctrl-C while a long render runs in another Python: the render stops at
