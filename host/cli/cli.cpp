@@ -36,6 +36,9 @@ CLI::Validator whole_number(uint64_t lo, uint64_t hi) {
     const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
     return CLI::Validator(
         [lo, hi, range](std::string& text) -> std::string {
+            const bool negative = text.size() > 1 && text[0] == '-' &&
+                                  text.find_first_not_of("0123456789", 1) == std::string::npos;
+            if (negative) return text + " is not in " + range;
             if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
                 return "'" + text + "' is not a whole number";
             if (text.size() > 12 || std::stoull(text) < lo || std::stoull(text) > hi)
@@ -404,6 +407,19 @@ std::string aov_names(const RenderSettings& s) {
         if (s.aovs & bit) names += (names.empty() ? "" : ",") + std::string(name);
     if (s.bounce_layers) names += names.empty() ? "bounces" : ",bounces";
     return names.empty() ? "none" : names;
+}
+
+std::vector<FlagInfo> render_flags() {
+    CommandLine cl;
+    RenderFlags flags;
+    CLI::App app;
+    const CLI::App& render = declare_app(app, cl, flags);
+    std::vector<FlagInfo> list;
+    for (const CLI::Option* o : render.get_options()) {
+        if (o->get_lnames().empty() || o->get_lnames()[0] == "help") continue; // the scene; --help
+        list.push_back({o->get_lnames()[0], o->get_type_name(), o->get_description(), o->get_expected_min() != 0});
+    }
+    return list;
 }
 
 CommandLine parse_command_line(int argc, const char** argv) {

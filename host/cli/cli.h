@@ -57,6 +57,16 @@ struct CommandLine {
 
 CommandLine parse_command_line(int argc, const char** argv);
 
+// A flag of `wavefront render` as the command line declares it, for front ends
+// that must offer the same flags (the Python module's keywords).
+struct FlagInfo {
+    std::string name;        // "pool-size"
+    std::string type;        // its kind and check, as --help shows them: "UINT:in 1 to 67108864", "FILE"
+    std::string help;        // one line, ending "(default: ...)"
+    bool takes_value = true; // false: a flag alone (--quiet)
+};
+std::vector<FlagInfo> render_flags();
+
 // --aov's value for these settings ("albedo,bounces"), or "none".
 std::string aov_names(const RenderSettings& settings);
 

@@ -152,7 +152,7 @@ FilmReadout resolve(const FilmState& st) {
     const std::vector<cl_float4>&s = st.sum, &c = st.compensation, &s2 = st.sum_squares, &c2 = st.squares_compensation;
     const std::vector<cl_uint>& n = st.samples;
     FilmReadout out;
-    out.mean = Image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
+    out.mean = Image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f), {}};
     out.variance_of_mean = out.mean;
     out.min_samples = pixels ? *std::min_element(n.begin(), n.end()) : 0;
     for (size_t p = 0; p < pixels; ++p) {
@@ -169,7 +169,7 @@ FilmReadout resolve(const FilmState& st) {
     }
     if (st.aovs && st.aov_albedo.size() == pixels) {
         auto mean_of = [&](const std::vector<cl_float4>& sums, auto value) {
-            Image image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
+            Image image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f), {}};
             for (size_t p = 0; p < pixels; ++p)
                 for (int k = 0; k < 3 && n[p]; ++k) image.rgb[3 * p + k] = value(sums[p], k) / float(n[p]);
             return image;
@@ -180,7 +180,7 @@ FilmReadout resolve(const FilmState& st) {
     }
     if (st.layers.size() != pixels * st.bounce_layers) return out; // not kept
     for (uint32_t l = 0; l < st.bounce_layers; ++l) {
-        Image layer{st.width, st.height, std::vector<float>(3 * pixels, 0.0f)};
+        Image layer{st.width, st.height, std::vector<float>(3 * pixels, 0.0f), {}};
         for (size_t p = 0; p < pixels; ++p)
             for (int k = 0; k < 3 && n[p]; ++k)
                 layer.rgb[3 * p + k] = static_cast<float>(

@@ -28,13 +28,13 @@ void write_partial_render(const std::string& path, const FilmState& film, const 
     const size_t pixels = size_t{film.width} * film.height;
     std::vector<ImageLayer> layers;
     for (int l = 0; l < 4; ++l) {
-        Image image{film.width, film.height, std::vector<float>(3 * pixels)};
+        Image image{film.width, film.height, std::vector<float>(3 * pixels), {}};
         const std::vector<cl_float4>& sums = *sums_of(film)[l];
         for (size_t p = 0; p < pixels; ++p)
             for (int k = 0; k < 3; ++k) image.rgb[3 * p + k] = sums[p].s[k];
         layers.push_back({kSumLayers[l], std::move(image)});
     }
-    Image counts{film.width, film.height, std::vector<float>(3 * pixels)};
+    Image counts{film.width, film.height, std::vector<float>(3 * pixels), {}};
     for (size_t p = 0; p < pixels; ++p) std::fill_n(&counts.rgb[3 * p], 3, static_cast<float>(film.samples[p]));
     layers.push_back({kSamplesLayer, std::move(counts)});
     write_image(path, resolve(film).mean, metadata, layers);

@@ -123,7 +123,7 @@ tinygltf::Model parse_model(const std::string& path, const std::vector<unsigned 
     // so a missing or broken image is reported with the material.
     parser.SetImageLoader(keep_image_encoded, nullptr);
     std::error_code ec;
-    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), ec), {}};
+    SceneFolder folder{std::filesystem::weakly_canonical(std::filesystem::absolute(path).parent_path(), ec), {}, {}};
     parser.SetFsCallbacks({&file_exists, &tinygltf::ExpandFilePath, &read_inside_folder,
                            &tinygltf::WriteWholeFile, &folder});
     tinygltf::Model model;

@@ -59,7 +59,7 @@ Image read_image(const std::string& path) {
     if (!in) throw InputError(path + ": cannot read (" + OIIO::geterror() + ")");
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 3) throw InputError(path + ": has " + std::to_string(spec.nchannels) + " channels, not RGB");
-    Image image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}};
+    Image image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}, {}};
     image.rgb.resize(size_t{image.width} * image.height * 3);
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
         throw InputError(path + ": cannot read (" + in->geterror() + ")");

@@ -10,9 +10,13 @@
 #include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <optional>
 #include <sstream>
 
+#include <unistd.h>
+
+#include <pybind11/eval.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -26,6 +30,7 @@
 #include "device/opencl_device.h"
 #include "gltf/gltf_loader.h"
 #include "image/image_io.h"
+#include "python/render_keywords.h"
 
 namespace py = pybind11;
 
@@ -53,29 +58,7 @@ py::array_t<float> to_array(const Image& image) {
     return a;
 }
 
-// The keywords as command-line words: name_with_underscores=value becomes
-// --name-with-underscores value; True a flag alone; False and None nothing;
-// a list or tuple its items joined by commas (aov=["bounces"]).
-std::vector<std::string> render_words(const std::string& scene, const py::kwargs& options) {
-    std::vector<std::string> words{"wavefront", "render", scene};
-    for (const auto& [key, value] : options) {
-        std::string flag = "--" + py::str(key).cast<std::string>();
-        std::replace(flag.begin(), flag.end(), '_', '-');
-        if (value.is_none() || (py::isinstance<py::bool_>(value) && !value.cast<bool>())) continue;
-        words.push_back(flag);
-        if (py::isinstance<py::bool_>(value)) continue;
-        if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-            std::string joined;
-            for (const py::handle item : value) joined += (joined.empty() ? "" : ",") + py::str(item).cast<std::string>();
-            words.push_back(joined);
-        } else {
-            words.push_back(py::str(value).cast<std::string>());
-        }
-    }
-    return words;
-}
-
-RenderOptions parse_render(const std::string& scene, const py::kwargs& options) {
+RenderOptions parse_render(const std::string& scene, const py::dict& options) {
     const std::vector<std::string> words = render_words(scene, options);
     std::vector<const char*> argv;
     for (const std::string& w : words) argv.push_back(w.c_str());
@@ -104,12 +87,43 @@ private:
     struct sigaction previous_ {};
 };
 
-PyResult render(py::object scene, std::optional<py::function> progress, const py::kwargs& options) {
+// reference= given as an array: written to a float image in a folder of its
+// own, which goes when the render does.
+class ArrayReference {
+public:
+    explicit ArrayReference(py::dict& options) {
+        if (!options.contains("reference") || !py::isinstance<py::array>(options["reference"])) return;
+        const auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(options["reference"]);
+        if (!a || a.ndim() != 3 || a.shape(2) != 3)
+            throw py::type_error("render(): reference takes a path or a height x width x 3 array");
+        Image image;
+        image.width = uint32_t(a.shape(1));
+        image.height = uint32_t(a.shape(0));
+        image.rgb.assign(a.data(), a.data() + a.size());
+        folder_ = std::filesystem::temp_directory_path() /
+                  ("wavefront-reference-" + std::to_string(::getpid()) + "-" + std::to_string(++count_));
+        std::filesystem::create_directories(folder_);
+        write_image((folder_ / "reference.exr").string(), image, ImageMetadata{});
+        options["reference"] = (folder_ / "reference.exr").string();
+    }
+    ~ArrayReference() {
+        std::error_code ignored;
+        if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
+    }
+
+private:
+    std::filesystem::path folder_;
+    static inline std::atomic<int> count_{0};
+};
+
+PyResult render(py::object scene, std::optional<py::function> progress, const py::kwargs& keywords) {
     const bool loaded = py::isinstance<PyScene>(scene);
     const std::string path = loaded ? scene.cast<const PyScene&>().path
                                     : py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
+    py::dict options(keywords);
+    const ArrayReference reference(options);
     RenderOptions parsed = parse_render(path, options);
-    const bool write_image = options.contains("output") || options.contains("o");
+    const bool write_image = options.contains("output");
     if (!options.contains("quiet")) parsed.quiet = true; // no table, report or progress line on the terminal
     if (loaded) { // the scene's camera, unless another is asked for
         const int camera = scene.cast<const PyScene&>().camera;
@@ -327,8 +341,16 @@ PYBIND11_MODULE(wavefront, m) {
         py::arg("path"),
         "An image file's RGB as linear float32 (8-bit formats are decoded from sRGB), height x width x 3");
 
-    m.def("render", &render, py::arg("scene"), py::arg("progress") = py::none(),
-          "Renders a scene (a path or a Scene) with `wavefront render`'s flags as keywords: spp=64, "
-          "pool_size=65536, schedule='refill', device='all', aov='bounces', output='out.exr', ... "
-          "progress(stats) is called as the render goes; Ctrl-C stops it cleanly and raises KeyboardInterrupt.");
+    // render() is a Python function, so that it can carry the signature of
+    // every keyword (render_keywords.h); _render does the work.
+    m.def("_render", &render, py::arg("scene"), py::arg("progress") = py::none());
+    py::exec("def render(scene, progress=None, **keywords):\n"
+             "    return _render(scene, progress, **keywords)\n",
+             m.attr("__dict__"));
+    describe_render(m.attr("render"),
+                    "Renders a scene (a path or a Scene) with `wavefront render`'s flags as keywords: spp=64, "
+                    "pool_size=65536,\nschedule='refill', device='all', aov='bounces', output='out.exr', "
+                    "reference=an array or a path, ...\nprogress(stats) is called as the render goes; Ctrl-C "
+                    "stops it cleanly and raises KeyboardInterrupt.\nNothing is written unless output= is "
+                    "given.");
 }

@@ -113,7 +113,7 @@ EnvironmentMap load_environment(const std::string& path, float scale, float rota
         spec.format.basetype != OIIO::TypeDesc::HALF)
         throw InputError(path + ": environment map is " + format + " of " + spec.format.c_str() +
                          ", not linear float radiance (.exr or .hdr)");
-    Image image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}};
+    Image image{static_cast<uint32_t>(spec.width), static_cast<uint32_t>(spec.height), {}, {}};
     image.rgb.resize(size_t{image.width} * image.height * 3);
     if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
         throw InputError(path + ": cannot read environment map (" + in->geterror() + ")");

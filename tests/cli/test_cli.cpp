@@ -191,7 +191,7 @@ TEST_F(Cli, BadFlagsAreRejectedByName) {
     expect_rejected("render " + kCornell + " --spp 0", "render: --spp: 0 is not in 1 to 16777216");
     expect_rejected("render " + kCornell + " --spp abc", "--spp: 'abc' is not a whole number");
     expect_rejected("render " + kCornell + " --spp=abc", "--spp: 'abc'"); // --opt=value reads the same
-    expect_rejected("render " + kCornell + " --width -5", "--width: '-5'");
+    expect_rejected("render " + kCornell + " --width -5", "--width: -5 is not in 1 to 32768");
     expect_rejected("render " + kCornell + " --width 100000 --height 100000", "--width: 100000");
     expect_rejected("render " + kCornell + " --roulette-cap 0", "--roulette-cap: 0 is not in (0, 1]");
     expect_rejected("render " + kCornell + " --roulette-cap 1.5", "--roulette-cap: 1.5 is not in (0, 1]");

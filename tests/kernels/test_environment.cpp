@@ -31,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-Image blank(uint32_t w, uint32_t h) { return Image{w, h, std::vector<float>(size_t{w} * h * 3, 0.0f)}; }
+Image blank(uint32_t w, uint32_t h) { return Image{w, h, std::vector<float>(size_t{w} * h * 3, 0.0f), {}}; }
 
 void set(Image& image, uint32_t x, uint32_t y, float r, float g, float b) {
     float* p = &image.rgb[3 * (size_t{y} * image.width + x)];

@@ -5,6 +5,7 @@ errors as exceptions with the command line's message, a progress callback,
 and Ctrl-C that stops the render cleanly and raises KeyboardInterrupt.
 Run by ctest (Python.Module) with build/python on PYTHONPATH."""
 
+import inspect
 import os
 import pathlib
 import signal
@@ -96,7 +97,7 @@ def test_errors_carry_the_command_lines_message(cache):
         wavefront.render(CORNELL, spp=0)
     with pytest.raises(ValueError, match="no-such.gltf"):
         wavefront.render(os.path.join(ROOT, "no-such.gltf"), spp=1)
-    with pytest.raises(wavefront.InputError, match="frobnicate"):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'frobnicate'"):
         wavefront.render(CORNELL, frobnicate=1)
     with pytest.raises(wavefront.InputError, match="--device 9: no such device"):
         wavefront.render(CORNELL, device=9, cache_dir=cache, **SMALL)
@@ -143,6 +144,40 @@ def test_version_and_what_objects_print(cache):
     megakernel = wavefront.render(CORNELL, integrator="megakernel", cache_dir=cache, **SMALL)
     assert megakernel.stats.schedule is None and megakernel.stats.integrator == "megakernel"
     assert repr(megakernel.stats).startswith("<wavefront.Stats megakernel: ")
+
+
+def test_every_flag_is_a_typed_keyword_with_its_default_and_help(cache):
+    binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
+    help_text = subprocess.run([binary, "render", "--help"], check=True, capture_output=True, text=True).stdout
+    flags = {line.split()[0].split(",")[-1][2:].replace("-", "_") for line in help_text.splitlines()
+             if line.startswith("  -")} - {"help"}
+    parameters = inspect.signature(wavefront.render).parameters
+    assert flags == set(parameters) - {"scene", "progress"}
+    assert all(parameters[f].kind == inspect.Parameter.KEYWORD_ONLY for f in flags)
+    assert parameters["spp"].default == 16 and parameters["spp"].annotation is int
+    assert parameters["schedule"].default == "auto" and parameters["quiet"].default is False
+    assert parameters["roulette_cap"].annotation is float and parameters["device"].default is None
+    assert "    spp: Samples per pixel (default: 16)" in wavefront.render.__doc__
+
+    for keywords, message in ((dict(sppp=4), "unexpected keyword argument 'sppp'"),
+                              (dict(spp=True), "spp takes an int, not bool"),
+                              (dict(spp="4"), "spp takes an int, not str"),
+                              (dict(quiet=0), "quiet takes True or False, not int"),
+                              (dict(aov=[1]), "aov takes a str or a list of str, not int"),
+                              (dict(output=3), "output takes a str or os.PathLike, not int"),
+                              (dict(reference=np.zeros((4, 4))), "reference takes a path or a height x width")):
+        with pytest.raises(TypeError, match=message):
+            wavefront.render(CORNELL, cache_dir=cache, **{**SMALL, **keywords})
+    with pytest.raises(wavefront.InputError, match=r"^render: --width: -5 is not in 1 to 32768$"):
+        wavefront.render(CORNELL, width=-5)
+
+
+def test_arrays_and_devices_are_accepted_as_such(cache):
+    result = wavefront.render(CORNELL, cache_dir=cache, device=wavefront.devices()[0], max_depth="unlimited",
+                              **SMALL)
+    again = wavefront.render(CORNELL, cache_dir=cache, reference=result.image, spp=4, width=48, height=36, seed=3)
+    assert again.checkpoints[-1].relmse == 0.0  # against an array: no file is left behind
+    assert not [f for f in os.listdir(tempfile.gettempdir()) if f.startswith(f"wavefront-reference-{os.getpid()}-")]
 
 
 # Ctrl-C while a long render runs in another Python: the render stops at
