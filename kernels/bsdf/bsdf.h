@@ -67,7 +67,7 @@
  *    the layers below weighed by 1 - max(sheen_color) min(S(mu_o), 1), glTF's
  *    albedo scaling: white sheen over white reflects 1; not reciprocal.
  *  - the clear coat (KHR_materials_clearcoat), over all the above: a GGX
- *    dielectric interface of ior 1.5 (Schlick, F0 0.04, F90 1) of its own
+ *    dielectric interface of ior 1.5 (bsdf/coat_fresnel.h) of its own
  *    roughness, weighted by `clearcoat`, with its multiple-scattering lobe,
  *    and what lies below it weighed by 1 - clearcoat C(mu_o), C the coat's
  *    whole directional albedo: a white material under any coat reflects 1.
@@ -109,12 +109,12 @@
 #include "wavefront/techniques.h"
 #include "common/sampling.h"
 #include "bsdf/albedo.h"
+#include "bsdf/coat_fresnel.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/sheen.h"
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
-#define WF_BSDF_COAT_F0 0.04f /* KHR_materials_clearcoat: a dielectric of ior 1.5 */
 /* The coat's multiple scattering, sampled by the cosine with the base, is left
  * out below this 1 - E_avg: it would return at most 0.1% of its tiny share. */
 #define WF_BSDF_COAT_MIN_LOSS 1e-3f
@@ -246,7 +246,7 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
     a.coat_o = 0.0f;
     if (p->clearcoat > 0.0f && mu_o > 0.0f) {
         if (bsdf_coat_smooth(p)) {
-            a.coat_o = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, mu_o);
+            a.coat_o = p->clearcoat * coat_fresnel(mu_o);
         } else {
             a.coat_at_o = ggx_albedo(mu_o, p->clearcoat_roughness);
             a.coat_e_average = ggx_albedo_average(p->clearcoat_roughness).x;
@@ -418,7 +418,7 @@ WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAtWo* a, float3 wo
     const float dot_o = dot(wo, wm);
     if (!(dot_o > 0.0f)) return 0.0f;
     *pdf = ggx_pdf_visible(wo, wm, alpha) / (4.0f * dot_o);
-    const float single = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, dot_o) * ggx_d(wm, alpha) *
+    const float single = p->clearcoat * coat_fresnel(dot_o) * ggx_d(wm, alpha) *
                          ggx_g2(wo, wi, alpha) / (4.0f * wo.z * wi.z);
     return single +
            a->coat_multiple * multiple_scattering_lobe(a->coat_at_o.x, ggx_albedo(wi.z, p->clearcoat_roughness).x,
