@@ -90,7 +90,8 @@
  * base lobes at wo.z (diffuse, multiple scattering, sheen), which are sampled
  * together: by the hemisphere sampler, or with probability p_loss (at most
  * 0.9, in proportion to its albedo) by the shape of the interface's
- * multiple-scattering lobe; at least
+ * multiple-scattering lobe, or with probability p_sheen (its share of their
+ * albedo) by the sheen's own sampler (bsdf/sheen.h); at least
  * WF_BSDF_MIN_LOBE_PROBABILITY for each while both are there, 1 where
  * none is, and 0 where the interface neither reflects nor transmits (specular
  * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
@@ -214,7 +215,8 @@ typedef struct BsdfAtWo {
      * bsdf_loss_probability): */
     float p_coat;
     float p_interface;
-    float p_loss; /* within the base lobes: drawing from the multiple-scattering lobe's shape */
+    float p_loss;  /* within the base lobes: drawing from the multiple-scattering lobe's shape */
+    float p_sheen; /* within the base lobes: drawing from the sheen's sampler (bsdf/sheen.h) */
 } BsdfAtWo;
 
 WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
@@ -318,6 +320,13 @@ WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, fl
     return min(e_loss / e->base_group, 0.9f);
 }
 
+/* Within the base lobes, the probability of drawing from the sheen's own
+ * sampler, its share of their albedo. The loss's and the sheen's albedos are
+ * parts of base_group, so with p_loss it stays at most 1. */
+WF_INLINE float bsdf_sheen_probability(const BsdfAtWo* a, const BsdfLobeAlbedos* e) {
+    return a->sheen_o > 0.0f && e->base_group > 0.0f ? min(a->sheen_o / e->base_group, 1.0f - a->p_loss) : 0.0f;
+}
+
 /* The probability that sampling chooses the interface rather than the base lobes. */
 WF_INLINE float bsdf_interface_probability(const BsdfLobeAlbedos* e) {
     if (!(e->base_group > 0.0f)) return 1.0f;
@@ -336,6 +345,7 @@ WF_INLINE BsdfAtWo bsdf_at_wo(const BsdfParams* p, float3 wo) {
     a.p_coat = bsdf_coat_probability(&a, &e);
     a.p_interface = bsdf_interface_probability(&e);
     a.p_loss = bsdf_loss_probability(p, &a, wo, &e);
+    a.p_sheen = bsdf_sheen_probability(&a, &e);
     return a;
 }
 
@@ -400,12 +410,16 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
 }
 
 /* The density of the base lobes' sampling: the hemisphere sampler, or with
- * probability p_loss the multiple-scattering lobe's shape. */
+ * probability p_loss the multiple-scattering lobe's shape, or with
+ * probability p_sheen the sheen's sampler. */
 WF_INLINE float bsdf_base_pdf(const BsdfParams* p, const BsdfAtWo* a, float3 wi) {
     if (!(wi.z > 0.0f)) return 0.0f;
     const float hemisphere = p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
-    if (!(a->p_loss > 0.0f)) return hemisphere;
-    return (1.0f - a->p_loss) * hemisphere + a->p_loss * loss_pdf(p->roughness, wi.z);
+    if (!(a->p_loss > 0.0f) && !(a->p_sheen > 0.0f)) return hemisphere;
+    float pdf = (1.0f - a->p_loss - a->p_sheen) * hemisphere;
+    if (a->p_loss > 0.0f) pdf += a->p_loss * loss_pdf(p->roughness, wi.z);
+    if (a->p_sheen > 0.0f) pdf += a->p_sheen * sheen_sample_pdf(p->sheen_roughness, wi.z);
+    return pdf;
 }
 
 /* The clear coat's f (both its lobes) and, in *pdf, the density of sampling
@@ -557,14 +571,19 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
             if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
         }
         s.wi = wi;
-    } else if (min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f) < at->p_loss) {
-        /* (u.x - p_interface) / (1 - p_interface) is uniform again: it chose the shape of the loss. */
-        const float mu = loss_sample_mu(p->roughness, u.y);
-        const float r = sqrt(max(0.0f, 1.0f - mu * mu));
-        s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
     } else {
-        const float2 ud = make_float2(u.y, u.z);
-        s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
+        /* (u.x - p_interface) / (1 - p_interface) is uniform again: it picks the base lobes' sampler. */
+        const float u_base = min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f);
+        if (u_base < at->p_loss + at->p_sheen) {
+            /* A cosine from the loss's shape or the sheen's sampler, and a uniform azimuth. */
+            const float mu = u_base < at->p_loss ? loss_sample_mu(p->roughness, u.y)
+                                                 : sheen_sample_mu(p->sheen_roughness, u.y);
+            const float r = sqrt(max(0.0f, 1.0f - mu * mu));
+            s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
+        } else {
+            const float2 ud = make_float2(u.y, u.z);
+            s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
+        }
     }
     float pdf;
     const float3 f = bsdf_eval_pdf_at(p, at, wo, s.wi, &pdf);

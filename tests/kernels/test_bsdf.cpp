@@ -490,7 +490,7 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
     const std::vector<vec3> special = {vec3(0, 0, 1), vec3(0, 0, -1), direction_at(0.05f), direction_at(-0.05f),
                                        direction_at(1e-4f), direction_at(-1e-4f), direction_at(1e-7f)};
     int samples = 0;
-    double largest_weight = 0.0, largest_sheen_weight = 0.0;
+    double largest_weight = 0.0;
     for (int k = 0; k < 100000; ++k) {
         const BsdfParams& p = materials[k % materials.size()];
         vec3 wo = (k / materials.size()) % 2 ? special[(k / 2) % special.size()] : random_unit(rng);
@@ -502,8 +502,7 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
             ++samples;
             const vec3 w = s.f * std::fabs(s.wi.z) / s.pdf;
             ASSERT_TRUE(finite(w)) << "roughness " << p.roughness << " wo.z " << wo.z;
-            double& largest = p.sheen_color == vec3(0.0f) ? largest_weight : largest_sheen_weight;
-            largest = std::max(largest, double(std::max(w.x, std::max(w.y, w.z))));
+            largest_weight = std::max(largest_weight, double(std::max(w.x, std::max(w.y, w.z))));
             if (!s.delta) {
                 ASSERT_TRUE(finite(wf_device::bsdf_eval(&p, wo, s.wi)));
                 ASSERT_TRUE(std::isfinite(wf_device::bsdf_pdf(&p, wo, s.wi)));
@@ -517,11 +516,9 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
         ASSERT_TRUE(std::isfinite(wf_device::bsdf_pdf(&p, wo, wi))) << "roughness " << p.roughness;
     }
     test::report_measured("no NaN/Inf: " + std::to_string(samples) + " samples, largest weight f|cos|/pdf " +
-                          std::to_string(largest_weight) + ", with a sheen " + std::to_string(largest_sheen_weight));
+                          std::to_string(largest_weight));
+    // Every lobe, the sheen's included (41 when the cosine sampled it).
     EXPECT_LT(largest_weight, 10.0);
-    // The sheen lobe is sampled by the cosine, not by its own shape: at low
-    // sheen roughness and grazing views its weight reaches tens (measured 41).
-    EXPECT_LT(largest_sheen_weight, 100.0);
 }
 
 // ---------------------------------------------------------------------------
