@@ -57,8 +57,14 @@
  *    1 - F(wo.wh) instead, which is neither bounded nor energy-conserving.
  *    A transmissive material's layer reflects with the exact F_d; its diffuse
  *    part (1 - transmission) is still weighed with Schlick's, an approximation
- *    of well under 1% of its albedo, and the multiple scattering of a rough
- *    refracting interface is not compensated (that needs tables over ior too).
+ *    of well under 1% of its albedo.
+ *  - a rough solid glass's multiple scattering: the glass share (1 - metallic)
+ *    transmission of the interface's reflection and all its refraction are
+ *    divided by E_g(mu_o), the single-scattering albedo of a white glass of
+ *    that roughness and ior seen from wo's side (bsdf/albedo.h's tables), so a
+ *    clear glass returns 1 at every roughness from outside and inside alike:
+ *    the albedo scaling of Cycles' glass. It depends on wo alone, so it is not
+ *    reciprocal.
  *
  *  - the sheen (KHR_materials_sheen, bsdf/sheen.h), over the above: the
  *    Charlie lobe, sheen_color D V / max(1, S(mu_o)), S its albedo from the
@@ -201,6 +207,7 @@ typedef struct BsdfAtWo {
     float3 multiple_color;       /* C of the multiple-scattering lobe */
     float3 layer_o;              /* L(mu_o), the dielectric layer's whole albedo */
     float3 layer_average;        /* L_avg */
+    float glass_scale;           /* 1 / E_g(mu_o) for a rough solid glass, else 1 */
     /* The clear coat, when there is one and wo is outside: */
     float2 coat_at_o;       /* its {E, B} at mu_o */
     float coat_e_average;   /* its E_avg */
@@ -242,6 +249,9 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
                                  ((1.0f - p->metallic) * (1.0f - p->transmission)) * a.layer_multiple_color;
     a.layer_o = bsdf_layer_albedo(p, &a, a.at_o);
     a.layer_average = bsdf_layer_albedo(p, &a, a.average);
+    a.glass_scale = bsdf_has_inside(p) && !bsdf_interface_smooth(p)
+                        ? 1.0f / glass_albedo(fabs(mu_o), p->roughness, p->ior, mu_o < 0.0f)
+                        : 1.0f;
     a.coat_at_o = make_float2(1.0f, 0.0f);
     a.coat_e_average = 1.0f;
     a.coat_multiple = 0.0f;
@@ -355,25 +365,9 @@ WF_INLINE float bsdf_reflect_probability(float3 r, float3 t) {
     return lr + lt > 0.0f ? lr / (lr + lt) : 1.0f;
 }
 
-/* wo refracted through the plane of normal n (either side), relative index
- * eta; 0 on total internal reflection. */
-WF_INLINE int bsdf_refract(float3 wo, float3 n, float eta, float3* wt) {
-    float cos_i = dot(n, wo);
-    if (cos_i < 0.0f) {
-        eta = 1.0f / eta;
-        cos_i = -cos_i;
-        n = -n;
-    }
-    const float sin2_t = max(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0f) return 0;
-    const float cos_t = sqrt(1.0f - sin2_t);
-    *wt = -wo / eta + (cos_i / eta - cos_t) * n;
-    return 1;
-}
-
 /* The rough interface's f and, in *pdf, the density of sampling wi given that
  * the interface was chosen. */
-WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, const BsdfAtWo* a, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     if (wo.z == 0.0f || wi.z == 0.0f) return bsdf_gray(0.0f);
     const int reflect = wo.z * wi.z > 0.0f;
@@ -392,9 +386,14 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
     /* Microfacets seen from behind by either direction carry nothing. */
     if (!(dot_o * cos_o > 0.0f) || !(dot_i * cos_i > 0.0f)) return bsdf_gray(0.0f);
     const float alpha = p->roughness * p->roughness;
-    const float3 r = bsdf_reflectance(p, dot_o);
-    const float3 t = bsdf_transmittance(p, dot_o);
+    float3 r = bsdf_reflectance(p, dot_o);
+    float3 t = bsdf_transmittance(p, dot_o);
     const float p_reflect = bsdf_reflect_probability(r, t);
+    if (a->glass_scale != 1.0f) {
+        /* The glass share's reflection and its refraction, made whole. */
+        r = r + ((a->glass_scale - 1.0f) * (1.0f - p->metallic) * p->transmission) * bsdf_layer_fresnel(p, dot_o);
+        t = a->glass_scale * t;
+    }
     const float d = ggx_d(wm, alpha);
     const float g = ggx_g2(wo, wi, alpha);
     const float pdf_wm = ggx_pdf_visible(wo, wm, alpha);
@@ -453,7 +452,7 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
     const float p_interface = at->p_interface;
     if (!bsdf_interface_smooth(p)) {
         float pdf_interface;
-        f = bsdf_interface_eval(p, wo, wi, &pdf_interface);
+        f = bsdf_interface_eval(p, at, wo, wi, &pdf_interface);
         *pdf = p_interface * pdf_interface;
     }
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -549,7 +548,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
                 s.pdf = p_below * p_interface * (1.0f - p_reflect);
             } else {
                 float3 wi;
-                if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
+                if (!fresnel_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
                 const float etap = wo.z > 0.0f ? p->ior : 1.0f / p->ior;
                 s.wi = wi;
                 s.f = below * t / (fabs(wi.z) * etap * etap);
@@ -568,7 +567,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
             if (!(wi.z * wo.z > 0.0f)) return s;
             if (!(u_choice < p_reflect)) wi.z = -wi.z; /* through the thin wall */
         } else {
-            if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
+            if (!fresnel_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
         }
         s.wi = wi;
     } else {
