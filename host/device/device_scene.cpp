@@ -1,11 +1,13 @@
 // device_scene.cpp — reorders the loaded triangles into BVH order and builds
 // the light table: each emissive triangle is weighted by its power,
-// π · area · mean(Le), doubled when it emits from both faces.
+// π · area · mean(Le), doubled when it emits from both faces, less what a
+// clear coat over it reflects back (bsdf/coat_fresnel.h).
 #include "device/device_scene.h"
 
 #include <algorithm>
 
 #include "base/alias_table.h"
+#include "bsdf/coat_fresnel.h"
 #include "device/bsdf_kind_choice.h"
 #include "device/device_buffer.h"
 #include "scene/environment_map.h"
@@ -24,7 +26,8 @@ double triangle_power(const Scene& scene, uint32_t t) {
     const glm::dvec3 a(scene.positions[3 * t]), b(scene.positions[3 * t + 1]), c(scene.positions[3 * t + 2]);
     const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
     const double radiance = (double(m.emission.x) + m.emission.y + m.emission.z) / 3.0;
-    return 3.14159265358979323846 * area * radiance * (m.double_sided ? 2.0 : 1.0);
+    return 3.14159265358979323846 * area * radiance * (m.double_sided ? 2.0 : 1.0) *
+           wf_device::coat_emission_mean(m.clearcoat);
 }
 
 double mean3(const float* v) { return (double(v[0]) + v[1] + v[2]) / 3.0; }

@@ -9,6 +9,10 @@
  *    (schlick_albedo).
  *  - ggx_albedo_average(r): their hemispherical averages 2 ∫ E mu dmu, of the
  *    same interpolant, so the lobes below integrate exactly.
+ *  - glass_albedo(mu, r, ior, inside): E_g, a white solid glass's whole
+ *    albedo, GGX reflection and refraction under the exact Fresnel term (the
+ *    refraction's 1/eta'^2 undone), trilinear in (sqrt(mu), r,
+ *    (ior - 1) / (ior + 1)), for a view from outside or inside.
  *  - multiple_scattering_color: the energy that bounces between microfacets
  *    return, F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg the average of
  *    Schlick's F (Kulla and Conty, "Revisiting Physically Based Shading at
@@ -30,13 +34,16 @@ WF_DEVICE_BEGIN
  * so no weight grows as the loss vanishes. */
 #define WF_ALBEDO_MIN_LOSS 1e-5f
 
-/* The grid cell and weight of x in [0, 1] on WF_ALBEDO_SIZE points. */
-WF_INLINE int albedo_cell(float x, float* t) {
-    const float s = min(max(x, 0.0f), 1.0f) * (float)(WF_ALBEDO_SIZE - 1);
-    const int i = (int)s < WF_ALBEDO_SIZE - 2 ? (int)s : WF_ALBEDO_SIZE - 2;
+/* The grid cell and weight of x in [0, 1] on `size` points. */
+WF_INLINE int grid_cell(float x, int size, float* t) {
+    const float s = min(max(x, 0.0f), 1.0f) * (float)(size - 1);
+    const int i = (int)s < size - 2 ? (int)s : size - 2;
     *t = s - (float)i;
     return i;
 }
+
+/* The same on WF_ALBEDO_SIZE points. */
+WF_INLINE int albedo_cell(float x, float* t) { return grid_cell(x, WF_ALBEDO_SIZE, t); }
 
 WF_INLINE float2 ggx_albedo(float mu, float roughness) {
     float tm, tr;
@@ -100,6 +107,21 @@ WF_INLINE float loss_pdf(float roughness, float mu) {
     const float mass = ggx_loss_cdf[r][k + 1] - ggx_loss_cdf[r][k];
     /* mass / h in x; / (2 x) in mu; / (2 pi) over the azimuth */
     return mass * (float)(WF_ALBEDO_SIZE - 1) / (4.0f * WF_PI * x);
+}
+
+WF_INLINE float glass_albedo(float mu, float roughness, float ior, int inside) {
+    float tm, tr, tx;
+    const int m = albedo_cell(sqrt(max(mu, 0.0f)), &tm), r = albedo_cell(roughness, &tr);
+    const int x = grid_cell((ior - 1.0f) / ((ior + 1.0f) * WF_GLASS_MAX_X), WF_GLASS_IOR_SIZE, &tx);
+    const int side = inside ? 1 : 0;
+    float v[2][2];
+    for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 2; ++k) {
+            const float lo = glass_albedo_table[side][x + i][r + k][m], hi = glass_albedo_table[side][x + i][r + k][m + 1];
+            v[i][k] = lo + tm * (hi - lo);
+        }
+    const float a = v[0][0] + tr * (v[0][1] - v[0][0]), b = v[1][0] + tr * (v[1][1] - v[1][0]);
+    return a + tx * (b - a);
 }
 
 /* The single-scattering albedo of a Schlick interface, from {E, B}. */

@@ -24,6 +24,13 @@
 // Then the sheen lobe's albedo (bsdf/sheen.h), S(mu, r) = ∫ D V mu_i dw_i,
 // on the same grid, by a midpoint rule in (sqrt(mu_i), phi_i) (the lobe
 // peaks at grazing angles, where sqrt spreads the rows).
+// Then the albedo E_g of a white solid glass: GGX reflection and refraction
+// weighed by the exact Fresnel term, the refraction's 1/eta'^2 undone, by
+// the same visible normals (F G2 / G1 reflected, (1 - F) G2 / G1 refracted,
+// for each normal), from outside (eta' = ior) and inside (eta' = 1 / ior), on
+// the same grid in sqrt(mu) and r (a coarser one missed a dip at grazing
+// views and low roughness by 3.5%) and WF_GLASS_IOR_SIZE points of
+// (ior - 1) / (ior + 1) from 0 to kGlassMaxX, where E_g changes slowly.
 // The CTest AlbedoTables.MatchTheirGenerator reruns this and compares bytes.
 #include <algorithm>
 #include <cstdio>
@@ -41,6 +48,9 @@ constexpr int kSize = 32;       // grid points in mu and in roughness
 constexpr uint32_t kSamples = 1u << 16; // visible normals per entry
 constexpr float kMinMu = 1e-4f; // the mu = 0 column: grazing, where E -> 0 continuously
 constexpr float kMinAlpha = 1e-4f; // the r = 0 row: as smooth as float GGX allows
+constexpr int kGlassIorSize = 12; // grid points of the glass table in ior
+constexpr uint32_t kGlassSamples = 1u << 14;
+constexpr float kGlassMaxX = 0.5f; // (ior - 1) / (ior + 1) up to ior 3
 
 // Van der Corput's base-2 radical inverse: i's bits mirrored after the point.
 float radical_inverse(uint32_t i) {
@@ -56,9 +66,11 @@ struct Entry {
     double e = 0.0, b = 0.0;
 };
 
+float grid_alpha(float roughness) { return roughness * roughness > kMinAlpha ? roughness * roughness : kMinAlpha; }
+
 Entry integrate(float mu, float roughness) {
     using namespace wf_device;
-    const float alpha = roughness * roughness > kMinAlpha ? roughness * roughness : kMinAlpha;
+    const float alpha = grid_alpha(roughness);
     const float3 wo = make_float3(std::sqrt(1.0f - mu * mu), 0.0f, mu);
     Entry sum;
     for (uint32_t i = 0; i < kSamples; ++i) {
@@ -72,6 +84,26 @@ Entry integrate(float mu, float roughness) {
         sum.b += weight * double(schlick_weight(dot_o));
     }
     return {sum.e / kSamples, sum.b / kSamples};
+}
+
+// E_g at view cosine mu (the view on the side of relative index eta).
+double glass_albedo(float mu, float roughness, float eta) {
+    using namespace wf_device;
+    const float alpha = grid_alpha(roughness);
+    const float3 wo = make_float3(std::sqrt(1.0f - mu * mu), 0.0f, mu);
+    const double g1 = ggx_g1(wo, alpha);
+    double sum = 0.0;
+    for (uint32_t i = 0; i < kGlassSamples; ++i) {
+        const float2 u = make_float2((i + 0.5f) / kGlassSamples, radical_inverse(i));
+        const float3 wm = ggx_sample_visible(wo, alpha, u);
+        const float dot_o = dot(wo, wm);
+        const float f = fresnel_dielectric(dot_o, eta);
+        const float3 wr = 2.0f * dot_o * wm - wo;
+        if (wr.z > 0.0f) sum += f * double(ggx_g2(wo, wr, alpha)) / g1;
+        float3 wt;
+        if (fresnel_refract(wo, wm, eta, &wt) && wt.z < 0.0f) sum += (1.0f - f) * double(ggx_g2(wo, wt, alpha)) / g1;
+    }
+    return sum / kGlassSamples;
 }
 
 double sheen_albedo(float mu, float roughness) {
@@ -153,10 +185,14 @@ int main() {
                 " * view cosine, each on %d points from 0 to 1; ggx_albedo_average_table[r]:\n"
                 " * their hemispherical averages; ggx_loss_cdf[r][i]: the distribution of\n"
                 " * (1 - E) mu dmu up to grid point i; sheen_albedo_table[r][mu]: the sheen lobe's\n"
-                " * albedo on the same grid. Read through bsdf/albedo.h. */\n",
-                kSize);
+                " * albedo on the same grid; glass_albedo_table[inside][ior][r][mu]: a white solid\n"
+                " * glass's albedo, reflection and refraction, on the same grid and %d points of\n"
+                " * (ior - 1) / (ior + 1) up to %.2f. Read through bsdf/albedo.h. */\n",
+                kSize, kGlassIorSize, double(kGlassMaxX));
     std::printf("#ifndef WF_ALBEDO_TABLES_H\n#define WF_ALBEDO_TABLES_H\n\n#include \"wavefront/compat.h\"\n\n");
-    std::printf("#define WF_ALBEDO_SIZE %d\n\nWF_DEVICE_BEGIN\n\n", kSize);
+    std::printf("#define WF_ALBEDO_SIZE %d\n#define WF_GLASS_IOR_SIZE %d\n#define WF_GLASS_MAX_X %.2ff\n\n"
+                "WF_DEVICE_BEGIN\n\n",
+                kSize, kGlassIorSize, double(kGlassMaxX));
     std::vector<std::vector<Entry>> table(kSize, std::vector<Entry>(kSize));
     std::printf("WF_CONSTANT float ggx_albedo_table[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE][2] = {\n");
     for (int r = 0; r < kSize; ++r) {
@@ -192,6 +228,24 @@ int main() {
         for (int m = 0; m < kSize; ++m)
             std::printf("%s%.6ff", m ? (m % 8 ? ", " : ",\n     ") : "", sheen_albedo(grid_mu(m), grid_roughness(r)));
         std::printf("},\n");
+    }
+    std::printf("};\n\nWF_CONSTANT float glass_albedo_table[2][WF_GLASS_IOR_SIZE][WF_ALBEDO_SIZE]"
+                "[WF_ALBEDO_SIZE] = {\n");
+    for (int inside = 0; inside < 2; ++inside) {
+        std::printf("    {\n");
+        for (int i = 0; i < kGlassIorSize; ++i) {
+            const float x = kGlassMaxX * float(i) / (kGlassIorSize - 1), ior = (1.0f + x) / (1.0f - x);
+            std::printf("        {");
+            for (int r = 0; r < kSize; ++r) {
+                std::printf("%s{", r ? ",\n         " : "");
+                for (int m = 0; m < kSize; ++m)
+                    std::printf("%s%.5ff", m ? (m % 8 ? ", " : ",\n          ") : "",
+                                glass_albedo(grid_mu(m), grid_roughness(r), inside ? 1.0f / ior : ior));
+                std::printf("}");
+            }
+            std::printf("},\n");
+        }
+        std::printf("    },\n");
     }
     std::printf("};\n\nWF_DEVICE_END\n\n#endif /* WF_ALBEDO_TABLES_H */\n");
     return 0;

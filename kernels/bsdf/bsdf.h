@@ -57,8 +57,14 @@
  *    1 - F(wo.wh) instead, which is neither bounded nor energy-conserving.
  *    A transmissive material's layer reflects with the exact F_d; its diffuse
  *    part (1 - transmission) is still weighed with Schlick's, an approximation
- *    of well under 1% of its albedo, and the multiple scattering of a rough
- *    refracting interface is not compensated (that needs tables over ior too).
+ *    of well under 1% of its albedo.
+ *  - a rough solid glass's multiple scattering: the glass share (1 - metallic)
+ *    transmission of the interface's reflection and all its refraction are
+ *    divided by E_g(mu_o), the single-scattering albedo of a white glass of
+ *    that roughness and ior seen from wo's side (bsdf/albedo.h's tables), so a
+ *    clear glass returns 1 at every roughness from outside and inside alike:
+ *    the albedo scaling of Cycles' glass. It depends on wo alone, so it is not
+ *    reciprocal.
  *
  *  - the sheen (KHR_materials_sheen, bsdf/sheen.h), over the above: the
  *    Charlie lobe, sheen_color D V / max(1, S(mu_o)), S its albedo from the
@@ -67,7 +73,7 @@
  *    the layers below weighed by 1 - max(sheen_color) min(S(mu_o), 1), glTF's
  *    albedo scaling: white sheen over white reflects 1; not reciprocal.
  *  - the clear coat (KHR_materials_clearcoat), over all the above: a GGX
- *    dielectric interface of ior 1.5 (Schlick, F0 0.04, F90 1) of its own
+ *    dielectric interface of ior 1.5 (bsdf/coat_fresnel.h) of its own
  *    roughness, weighted by `clearcoat`, with its multiple-scattering lobe,
  *    and what lies below it weighed by 1 - clearcoat C(mu_o), C the coat's
  *    whole directional albedo: a white material under any coat reflects 1.
@@ -90,7 +96,8 @@
  * base lobes at wo.z (diffuse, multiple scattering, sheen), which are sampled
  * together: by the hemisphere sampler, or with probability p_loss (at most
  * 0.9, in proportion to its albedo) by the shape of the interface's
- * multiple-scattering lobe; at least
+ * multiple-scattering lobe, or with probability p_sheen (its share of their
+ * albedo) by the sheen's own sampler (bsdf/sheen.h); at least
  * WF_BSDF_MIN_LOBE_PROBABILITY for each while both are there, 1 where
  * none is, and 0 where the interface neither reflects nor transmits (specular
  * 0 on a dielectric: a plain Lambertian surface). The interface samples a GGX visible normal (Heitz 2018) and then
@@ -109,12 +116,12 @@
 #include "wavefront/techniques.h"
 #include "common/sampling.h"
 #include "bsdf/albedo.h"
+#include "bsdf/coat_fresnel.h"
 #include "bsdf/fresnel.h"
 #include "bsdf/microfacet.h"
 #include "bsdf/sheen.h"
 
 #define WF_BSDF_DELTA_ALPHA 1e-3f
-#define WF_BSDF_COAT_F0 0.04f /* KHR_materials_clearcoat: a dielectric of ior 1.5 */
 /* The coat's multiple scattering, sampled by the cosine with the base, is left
  * out below this 1 - E_avg: it would return at most 0.1% of its tiny share. */
 #define WF_BSDF_COAT_MIN_LOSS 1e-3f
@@ -200,6 +207,7 @@ typedef struct BsdfAtWo {
     float3 multiple_color;       /* C of the multiple-scattering lobe */
     float3 layer_o;              /* L(mu_o), the dielectric layer's whole albedo */
     float3 layer_average;        /* L_avg */
+    float glass_scale;           /* 1 / E_g(mu_o) for a rough solid glass, else 1 */
     /* The clear coat, when there is one and wo is outside: */
     float2 coat_at_o;       /* its {E, B} at mu_o */
     float coat_e_average;   /* its E_avg */
@@ -214,7 +222,8 @@ typedef struct BsdfAtWo {
      * bsdf_loss_probability): */
     float p_coat;
     float p_interface;
-    float p_loss; /* within the base lobes: drawing from the multiple-scattering lobe's shape */
+    float p_loss;  /* within the base lobes: drawing from the multiple-scattering lobe's shape */
+    float p_sheen; /* within the base lobes: drawing from the sheen's sampler (bsdf/sheen.h) */
 } BsdfAtWo;
 
 WF_INLINE int bsdf_coat_smooth(const BsdfParams* p) {
@@ -240,13 +249,16 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
                                  ((1.0f - p->metallic) * (1.0f - p->transmission)) * a.layer_multiple_color;
     a.layer_o = bsdf_layer_albedo(p, &a, a.at_o);
     a.layer_average = bsdf_layer_albedo(p, &a, a.average);
+    a.glass_scale = bsdf_has_inside(p) && !bsdf_interface_smooth(p)
+                        ? 1.0f / glass_albedo(fabs(mu_o), p->roughness, p->ior, mu_o < 0.0f)
+                        : 1.0f;
     a.coat_at_o = make_float2(1.0f, 0.0f);
     a.coat_e_average = 1.0f;
     a.coat_multiple = 0.0f;
     a.coat_o = 0.0f;
     if (p->clearcoat > 0.0f && mu_o > 0.0f) {
         if (bsdf_coat_smooth(p)) {
-            a.coat_o = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, mu_o);
+            a.coat_o = p->clearcoat * coat_fresnel(mu_o);
         } else {
             a.coat_at_o = ggx_albedo(mu_o, p->clearcoat_roughness);
             a.coat_e_average = ggx_albedo_average(p->clearcoat_roughness).x;
@@ -318,6 +330,13 @@ WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, fl
     return min(e_loss / e->base_group, 0.9f);
 }
 
+/* Within the base lobes, the probability of drawing from the sheen's own
+ * sampler, its share of their albedo. The loss's and the sheen's albedos are
+ * parts of base_group, so with p_loss it stays at most 1. */
+WF_INLINE float bsdf_sheen_probability(const BsdfAtWo* a, const BsdfLobeAlbedos* e) {
+    return a->sheen_o > 0.0f && e->base_group > 0.0f ? min(a->sheen_o / e->base_group, 1.0f - a->p_loss) : 0.0f;
+}
+
 /* The probability that sampling chooses the interface rather than the base lobes. */
 WF_INLINE float bsdf_interface_probability(const BsdfLobeAlbedos* e) {
     if (!(e->base_group > 0.0f)) return 1.0f;
@@ -336,6 +355,7 @@ WF_INLINE BsdfAtWo bsdf_at_wo(const BsdfParams* p, float3 wo) {
     a.p_coat = bsdf_coat_probability(&a, &e);
     a.p_interface = bsdf_interface_probability(&e);
     a.p_loss = bsdf_loss_probability(p, &a, wo, &e);
+    a.p_sheen = bsdf_sheen_probability(&a, &e);
     return a;
 }
 
@@ -345,25 +365,9 @@ WF_INLINE float bsdf_reflect_probability(float3 r, float3 t) {
     return lr + lt > 0.0f ? lr / (lr + lt) : 1.0f;
 }
 
-/* wo refracted through the plane of normal n (either side), relative index
- * eta; 0 on total internal reflection. */
-WF_INLINE int bsdf_refract(float3 wo, float3 n, float eta, float3* wt) {
-    float cos_i = dot(n, wo);
-    if (cos_i < 0.0f) {
-        eta = 1.0f / eta;
-        cos_i = -cos_i;
-        n = -n;
-    }
-    const float sin2_t = max(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0f) return 0;
-    const float cos_t = sqrt(1.0f - sin2_t);
-    *wt = -wo / eta + (cos_i / eta - cos_t) * n;
-    return 1;
-}
-
 /* The rough interface's f and, in *pdf, the density of sampling wi given that
  * the interface was chosen. */
-WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, float* pdf) {
+WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, const BsdfAtWo* a, float3 wo, float3 wi, float* pdf) {
     *pdf = 0.0f;
     if (wo.z == 0.0f || wi.z == 0.0f) return bsdf_gray(0.0f);
     const int reflect = wo.z * wi.z > 0.0f;
@@ -382,9 +386,14 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
     /* Microfacets seen from behind by either direction carry nothing. */
     if (!(dot_o * cos_o > 0.0f) || !(dot_i * cos_i > 0.0f)) return bsdf_gray(0.0f);
     const float alpha = p->roughness * p->roughness;
-    const float3 r = bsdf_reflectance(p, dot_o);
-    const float3 t = bsdf_transmittance(p, dot_o);
+    float3 r = bsdf_reflectance(p, dot_o);
+    float3 t = bsdf_transmittance(p, dot_o);
     const float p_reflect = bsdf_reflect_probability(r, t);
+    if (a->glass_scale != 1.0f) {
+        /* The glass share's reflection and its refraction, made whole. */
+        r = r + ((a->glass_scale - 1.0f) * (1.0f - p->metallic) * p->transmission) * bsdf_layer_fresnel(p, dot_o);
+        t = a->glass_scale * t;
+    }
     const float d = ggx_d(wm, alpha);
     const float g = ggx_g2(wo, wi, alpha);
     const float pdf_wm = ggx_pdf_visible(wo, wm, alpha);
@@ -400,12 +409,16 @@ WF_INLINE float3 bsdf_interface_eval(const BsdfParams* p, float3 wo, float3 wi, 
 }
 
 /* The density of the base lobes' sampling: the hemisphere sampler, or with
- * probability p_loss the multiple-scattering lobe's shape. */
+ * probability p_loss the multiple-scattering lobe's shape, or with
+ * probability p_sheen the sheen's sampler. */
 WF_INLINE float bsdf_base_pdf(const BsdfParams* p, const BsdfAtWo* a, float3 wi) {
     if (!(wi.z > 0.0f)) return 0.0f;
     const float hemisphere = p->hemisphere == WF_HEMISPHERE_COSINE ? wi.z * WF_INV_PI : 0.5f * WF_INV_PI;
-    if (!(a->p_loss > 0.0f)) return hemisphere;
-    return (1.0f - a->p_loss) * hemisphere + a->p_loss * loss_pdf(p->roughness, wi.z);
+    if (!(a->p_loss > 0.0f) && !(a->p_sheen > 0.0f)) return hemisphere;
+    float pdf = (1.0f - a->p_loss - a->p_sheen) * hemisphere;
+    if (a->p_loss > 0.0f) pdf += a->p_loss * loss_pdf(p->roughness, wi.z);
+    if (a->p_sheen > 0.0f) pdf += a->p_sheen * sheen_sample_pdf(p->sheen_roughness, wi.z);
+    return pdf;
 }
 
 /* The clear coat's f (both its lobes) and, in *pdf, the density of sampling
@@ -418,7 +431,7 @@ WF_INLINE float bsdf_coat_eval(const BsdfParams* p, const BsdfAtWo* a, float3 wo
     const float dot_o = dot(wo, wm);
     if (!(dot_o > 0.0f)) return 0.0f;
     *pdf = ggx_pdf_visible(wo, wm, alpha) / (4.0f * dot_o);
-    const float single = p->clearcoat * fresnel_schlick_scalar(WF_BSDF_COAT_F0, dot_o) * ggx_d(wm, alpha) *
+    const float single = p->clearcoat * coat_fresnel(dot_o) * ggx_d(wm, alpha) *
                          ggx_g2(wo, wi, alpha) / (4.0f * wo.z * wi.z);
     return single +
            a->coat_multiple * multiple_scattering_lobe(a->coat_at_o.x, ggx_albedo(wi.z, p->clearcoat_roughness).x,
@@ -439,7 +452,7 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
     const float p_interface = at->p_interface;
     if (!bsdf_interface_smooth(p)) {
         float pdf_interface;
-        f = bsdf_interface_eval(p, wo, wi, &pdf_interface);
+        f = bsdf_interface_eval(p, at, wo, wi, &pdf_interface);
         *pdf = p_interface * pdf_interface;
     }
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -535,7 +548,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
                 s.pdf = p_below * p_interface * (1.0f - p_reflect);
             } else {
                 float3 wi;
-                if (!bsdf_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
+                if (!fresnel_refract(wo, make_float3(0.0f, 0.0f, 1.0f), p->ior, &wi) || wi.z == 0.0f) return s;
                 const float etap = wo.z > 0.0f ? p->ior : 1.0f / p->ior;
                 s.wi = wi;
                 s.f = below * t / (fabs(wi.z) * etap * etap);
@@ -554,17 +567,22 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
             if (!(wi.z * wo.z > 0.0f)) return s;
             if (!(u_choice < p_reflect)) wi.z = -wi.z; /* through the thin wall */
         } else {
-            if (!bsdf_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
+            if (!fresnel_refract(wo, wm, p->ior, &wi) || !(wi.z * wo.z < 0.0f)) return s;
         }
         s.wi = wi;
-    } else if (min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f) < at->p_loss) {
-        /* (u.x - p_interface) / (1 - p_interface) is uniform again: it chose the shape of the loss. */
-        const float mu = loss_sample_mu(p->roughness, u.y);
-        const float r = sqrt(max(0.0f, 1.0f - mu * mu));
-        s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
     } else {
-        const float2 ud = make_float2(u.y, u.z);
-        s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
+        /* (u.x - p_interface) / (1 - p_interface) is uniform again: it picks the base lobes' sampler. */
+        const float u_base = min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f);
+        if (u_base < at->p_loss + at->p_sheen) {
+            /* A cosine from the loss's shape or the sheen's sampler, and a uniform azimuth. */
+            const float mu = u_base < at->p_loss ? loss_sample_mu(p->roughness, u.y)
+                                                 : sheen_sample_mu(p->sheen_roughness, u.y);
+            const float r = sqrt(max(0.0f, 1.0f - mu * mu));
+            s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
+        } else {
+            const float2 ud = make_float2(u.y, u.z);
+            s.wi = p->hemisphere == WF_HEMISPHERE_COSINE ? sample_cosine_hemisphere(ud) : sample_uniform_hemisphere(ud);
+        }
     }
     float pdf;
     const float3 f = bsdf_eval_pdf_at(p, at, wo, s.wi, &pdf);

@@ -1,5 +1,5 @@
-/* fresnel.h — how much light a smooth interface reflects; shared by the
- * kernels and the host.
+/* fresnel.h — how much light a smooth interface reflects, and where it
+ * refracts the rest; shared by the kernels and the host.
  *
  *  - fresnel_dielectric: the exact reflectance for unpolarised light of the
  *    interface between two dielectrics, the mean of the s and p reflectances
@@ -41,6 +41,22 @@ WF_INLINE float fresnel_dielectric(float cos_i, float eta) {
 WF_INLINE float fresnel_f0(float eta) {
     const float r = (eta - 1.0f) / (eta + 1.0f);
     return r * r;
+}
+
+/* wo refracted through the plane of normal n (either side), relative index
+ * eta; 0 on total internal reflection. */
+WF_INLINE int fresnel_refract(float3 wo, float3 n, float eta, float3* wt) {
+    float cos_i = dot(n, wo);
+    if (cos_i < 0.0f) {
+        eta = 1.0f / eta;
+        cos_i = -cos_i;
+        n = -n;
+    }
+    const float sin2_t = max(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1.0f) return 0;
+    const float cos_t = sqrt(1.0f - sin2_t);
+    *wt = -wo / eta + (cos_i / eta - cos_t) * n;
+    return 1;
 }
 
 WF_INLINE float schlick_weight(float cos_i) {

@@ -51,7 +51,7 @@ WF_INLINE LightSample sample_emissive_triangle(LightEntry entry, const Scene* sc
     point.b2 = b.y;
     /* A point in an alpha-masked hole is not there: BSDF rays pass through it. */
     const bool present = hit_passes_filter(scene, scene->triangles, (int)entry.index, b.x, b.y);
-    s.radiance = emits_toward && present ? surface_emission(m, scene, &point) : (float3)(0.0f);
+    s.radiance = emits_toward && present ? surface_emission(m, scene, &point, s.normal, -s.wi) : (float3)(0.0f);
     s.pdf = emits_toward && present ? light_pdf_solid_angle(entry.pmf, area, dist2, fabs(cos_front)) : 0.0f;
     return s;
 }

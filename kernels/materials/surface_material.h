@@ -1,7 +1,8 @@
 /* surface_material.h — a material at one point of one triangle: its glTF
  * factors times its textures (materials/surface_texture.h), as the shade
  * stage and light sampling need them: the BSDF's parameters, the emitted
- * radiance, and the normal-mapped shading normal. Device only. */
+ * radiance (through the clear coat), and the normal-mapped shading normal.
+ * Device only. */
 #ifndef WF_SURFACE_MATERIAL_H
 #define WF_SURFACE_MATERIAL_H
 
@@ -10,6 +11,11 @@
 #include "materials/surface_texture.h"
 #include "materials/valid_reflection.h"
 #include "materials/vertex_color.h"
+
+/* The clear coat's weight: its factor times its texture's red. */
+WF_INLINE float surface_clearcoat(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
+    return m->clearcoat > 0.0f ? m->clearcoat * surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x : 0.0f;
+}
 
 WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
                                uint hemisphere) {
@@ -24,12 +30,9 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     b.specular = m->specular * surface_texture(scene, p, WF_TEXTURE_SPECULAR).w;
     b.specular_color = vload3(0, m->specular_color) * surface_texture(scene, p, WF_TEXTURE_SPECULAR_COLOR).xyz;
     b.thin_walled = (m->flags & WF_MATERIAL_THIN_WALLED) != 0u;
-    b.clearcoat = m->clearcoat;
+    b.clearcoat = surface_clearcoat(m, scene, p);
     b.clearcoat_roughness = m->clearcoat_roughness;
-    if (b.clearcoat > 0.0f) {
-        b.clearcoat *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x;
-        b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
-    }
+    if (m->clearcoat > 0.0f) b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
     b.sheen_color = vload3(0, m->sheen_color);
     b.sheen_roughness = m->sheen_roughness;
     if (any(b.sheen_color > 0.0f)) {
@@ -38,11 +41,6 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     }
     b.hemisphere = hemisphere;
     return b;
-}
-
-/* Radiance emitted by the front face at the point. */
-WF_INLINE float3 surface_emission(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
-    return vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
 }
 
 /* x turned to the side of ng. */
@@ -80,6 +78,25 @@ WF_INLINE float3 surface_normal(const Scene* scene, const SurfacePoint* p, float
 #else
     return facing(n, ng);
 #endif
+}
+
+/* surface_normal at the point, from the triangle's interpolated normals. */
+WF_INLINE float3 surface_shading_normal(const Scene* scene, const SurfacePoint* p, float3 ng, float3 v) {
+    __global const TriangleNormals* n = &scene->normals[p->triangle];
+    const float b0 = 1.0f - p->b1 - p->b2;
+    const float3 interpolated = normalize(b0 * vload3(0, n->n0) + p->b1 * vload3(0, n->n1) + p->b2 * vload3(0, n->n2));
+    return surface_normal(scene, p, interpolated, ng, v);
+}
+
+/* Radiance emitted at the point toward v (unit; ng the unit geometric normal
+ * on its side), through the clear coat if there is one (bsdf/coat_fresnel.h):
+ * the one rule for emission that rays find and that light sampling draws. */
+WF_INLINE float3 surface_emission(__global const Material* m, const Scene* scene, const SurfacePoint* p, float3 ng,
+                                  float3 v) {
+    const float3 emission = vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
+    if (!(m->clearcoat > 0.0f)) return emission;
+    const float mu_o = dot(surface_shading_normal(scene, p, ng, v), v);
+    return coat_emission_weight(surface_clearcoat(m, scene, p), mu_o) * emission;
 }
 
 #endif

@@ -49,7 +49,6 @@ WF_INLINE SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, f
     const float3 v0 = triangle_corner(scene->triangles, point->triangle, 0);
     const float3 v1 = triangle_corner(scene->triangles, point->triangle, 1);
     const float3 v2 = triangle_corner(scene->triangles, point->triangle, 2);
-    __global const TriangleNormals* n = &scene->normals[point->triangle];
     /* From the corners, not origin + t·direction: off the triangle by its own
      * rounding alone, which position_error bounds. */
     s.position = interpolate_triangle(v0, v1, v2, hit.y, hit.z);
@@ -59,9 +58,7 @@ WF_INLINE SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, f
     const float3 ng = cross_edges / (2.0f * s.area);
     s.front_face = dot(ng, direction) < 0.0f;
     s.geometric_normal = s.front_face ? ng : -ng;
-    const float b0 = 1.0f - hit.y - hit.z;
-    const float3 interpolated = normalize(b0 * vload3(0, n->n0) + hit.y * vload3(0, n->n1) + hit.z * vload3(0, n->n2));
-    s.shading_normal = surface_normal(scene, point, interpolated, s.geometric_normal, -direction);
+    s.shading_normal = surface_shading_normal(scene, point, s.geometric_normal, -direction);
     return s;
 }
 
@@ -158,7 +155,8 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
         const float cos_light = -dot(s.geometric_normal, direction);
         const float pdf_light = light_pdf_solid_angle(scene->lights[light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-        add_radiance(path, params, film, slot, pixel, depth, weight * throughput * surface_emission(m, scene, &point));
+        add_radiance(path, params, film, slot, pixel, depth,
+                     weight * throughput * surface_emission(m, scene, &point, s.geometric_normal, -direction));
     }
     if (depth >= params->max_depth) return false;
 

@@ -4,8 +4,8 @@
 //     over 16 x 32 (cos theta, phi) cells of the sphere, 1e6 samples each);
 //  2. that density integrates to the probability of a non-Dirac sample;
 //  3. reflection is reciprocal, transmission generalised-reciprocal;
-//  4. nothing reflects more than it receives, and clear glass, a white
-//     mirror and every opaque white material lose nothing;
+//  4. nothing reflects more than it receives, and clear glass (smooth or
+//     rough), a white mirror and every opaque white material lose nothing;
 //  5. Dirac lobes reflect and refract exactly, with total internal reflection;
 //  6. no NaN or Inf at any roughness, at grazing or normal incidence.
 // Over 400 lines on purpose: the six properties are checked over one list of
@@ -296,6 +296,16 @@ TEST(Bsdf, Reciprocity) {
         // A clear coat or a sheen weighs what lies below it by its albedo at
         // wo alone (bsdf_eval_pdf): energy-conserving, by design not reciprocal.
         if (c.p.clearcoat > 0.0f || c.p.sheen_color != vec3(0.0f)) continue;
+        // A rough solid glass's single scattering is divided by its albedo at
+        // wo, E_g(mu_o), as well: a clear glass (metallic 0, transmission 1)
+        // is that alone, so the single scattering is checked with it divided
+        // out; a mixed one is left out.
+        const bool glass_scaled = wf_device::bsdf_has_inside(&c.p) && !wf_device::bsdf_interface_smooth(&c.p);
+        if (glass_scaled && (c.p.metallic != 0.0f || c.p.transmission != 1.0f)) continue;
+        const auto single = [&](vec3 wo, vec3 wi) {
+            const vec3 f = wf_device::bsdf_eval(&c.p, wo, wi);
+            return glass_scaled ? f / wf_device::bsdf_at_wo(&c.p, wo).glass_scale : f;
+        };
         for (int k = 0; k < 2000; ++k) {
             vec3 wo = random_unit(rng), wi = random_unit(rng);
             if (c.p.transmission == 0.0f) wo.z = std::fabs(wo.z), wi.z = std::fabs(wi.z);
@@ -311,7 +321,7 @@ TEST(Bsdf, Reciprocity) {
                     ASSERT_NEAR(a[ch], b[ch], 1e-4f * std::max(a[ch], b[ch]) + 1e-12f) << c.name;
                 continue;
             }
-            const vec3 a = wf_device::bsdf_eval(&c.p, wo, wi), b = wf_device::bsdf_eval(&c.p, wi, wo);
+            const vec3 a = single(wo, wi), b = single(wi, wo);
             if (wo.z * wi.z > 0.0f) {
                 ++reflections;
                 for (int ch = 0; ch < 3; ++ch)
@@ -386,6 +396,20 @@ TEST(Bsdf, WhiteFurnace) {
             white_sheen)
             EXPECT_NEAR(a.mean, 1.0, 0.005 + 3.0 * a.standard_error) << c.name;
     }
+    // A rough clear glass (bsdf/albedo.h's glass tables) loses nothing either,
+    // from outside and inside, at every roughness and ior: 0.93 at a grazing
+    // view at roughness 0.3 before its single scattering was made whole.
+    double worst_glass = 0.0;
+    for (float r : {0.05f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f, 1.0f})
+        for (float ior : {1.33f, 1.5f, 2.0f})
+            for (float c : {1.0f, 0.6f, 0.2f, 0.05f, -1.0f, -0.6f, -0.2f, -0.05f}) {
+                const Albedo g = albedo(material(vec3(1.0f), 0.0f, r, 1.0f, ior), direction_at(c), 50000, seed++, true);
+                worst_glass = std::max(worst_glass, std::fabs(g.mean - 1.0));
+                EXPECT_NEAR(g.mean, 1.0, 0.01 + 3.0 * g.standard_error) << "rough glass r" << r << " ior " << ior
+                                                                        << " wo.z " << c;
+            }
+    test::report_measured("albedo rough glass, r 0.05-1, ior 1.33-2, from both sides: largest |1 - albedo| " +
+                          std::to_string(worst_glass));
     // Lossless Dirac interfaces: all the energy, reflected plus transmitted.
     const BsdfParams glass = material(vec3(1.0f), 0.0f, 0.0f, 1.0f, 1.5f);
     const BsdfParams mirror = material(vec3(1.0f), 1.0f, 0.0f);
@@ -490,7 +514,7 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
     const std::vector<vec3> special = {vec3(0, 0, 1), vec3(0, 0, -1), direction_at(0.05f), direction_at(-0.05f),
                                        direction_at(1e-4f), direction_at(-1e-4f), direction_at(1e-7f)};
     int samples = 0;
-    double largest_weight = 0.0, largest_sheen_weight = 0.0;
+    double largest_weight = 0.0;
     for (int k = 0; k < 100000; ++k) {
         const BsdfParams& p = materials[k % materials.size()];
         vec3 wo = (k / materials.size()) % 2 ? special[(k / 2) % special.size()] : random_unit(rng);
@@ -502,8 +526,7 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
             ++samples;
             const vec3 w = s.f * std::fabs(s.wi.z) / s.pdf;
             ASSERT_TRUE(finite(w)) << "roughness " << p.roughness << " wo.z " << wo.z;
-            double& largest = p.sheen_color == vec3(0.0f) ? largest_weight : largest_sheen_weight;
-            largest = std::max(largest, double(std::max(w.x, std::max(w.y, w.z))));
+            largest_weight = std::max(largest_weight, double(std::max(w.x, std::max(w.y, w.z))));
             if (!s.delta) {
                 ASSERT_TRUE(finite(wf_device::bsdf_eval(&p, wo, s.wi)));
                 ASSERT_TRUE(std::isfinite(wf_device::bsdf_pdf(&p, wo, s.wi)));
@@ -517,11 +540,9 @@ TEST(Bsdf, NoNanOrInfAtAnyRoughness) {
         ASSERT_TRUE(std::isfinite(wf_device::bsdf_pdf(&p, wo, wi))) << "roughness " << p.roughness;
     }
     test::report_measured("no NaN/Inf: " + std::to_string(samples) + " samples, largest weight f|cos|/pdf " +
-                          std::to_string(largest_weight) + ", with a sheen " + std::to_string(largest_sheen_weight));
+                          std::to_string(largest_weight));
+    // Every lobe, the sheen's included (41 when the cosine sampled it).
     EXPECT_LT(largest_weight, 10.0);
-    // The sheen lobe is sampled by the cosine, not by its own shape: at low
-    // sheen roughness and grazing views its weight reaches tens (measured 41).
-    EXPECT_LT(largest_sheen_weight, 100.0);
 }
 
 // ---------------------------------------------------------------------------
