@@ -9,6 +9,7 @@
 // with the command line's one-line message.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <optional>
@@ -123,11 +124,13 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     py::dict options(keywords);
     const ArrayReference reference(options);
     RenderOptions parsed = parse_render(path, options);
-    const bool write_image = options.contains("output");
-    if (!options.contains("quiet")) parsed.quiet = true; // no table, report or progress line on the terminal
+    // None is the flag's default, as if not given (the signature shows None).
+    const auto given = [&](const char* name) { return options.contains(name) && !options[name].is_none(); };
+    const bool write_image = given("output");
+    if (!given("quiet")) parsed.quiet = true; // no table, report or progress line on the terminal
     if (loaded) { // the scene's camera, unless another is asked for
         const int camera = scene.cast<const PyScene&>().camera;
-        if (!options.contains("camera")) parsed.camera = camera;
+        if (!given("camera")) parsed.camera = camera;
         if (parsed.camera != camera)
             throw InputError("render: camera " + std::to_string(parsed.camera) + " is not the one " + path +
                              " was loaded with (" + std::to_string(camera) + "); load it again with that camera");
@@ -159,11 +162,6 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
         std::ostream quiet(nullptr);
         result.summary = run_render(parsed, quiet, quiet, hooks);
     }
-    if (raised) throw std::move(*raised);
-    if (result.summary.interrupted_by) {
-        PyErr_SetNone(PyExc_KeyboardInterrupt);
-        throw py::error_already_set();
-    }
     result.image = to_array(film.mean);
     result.variance = to_array(film.variance_of_mean);
     if (film.albedo) result.aovs["albedo"] = to_array(*film.albedo);
@@ -175,6 +173,18 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     }
     for (size_t l = 0; l < film.bounce_layers.size(); ++l)
         result.bounce_layers[py::str(bounce_layer_name(l, film.bounce_layers.size()))] = to_array(film.bounce_layers[l]);
+    // A render stopped by the callback's exception or by Ctrl-C keeps what it
+    // computed: the exception carries it as `result`.
+    if (raised) {
+        raised->value().attr("result") = py::cast(std::move(result));
+        throw std::move(*raised);
+    }
+    if (result.summary.interrupted_by) {
+        const py::object interrupt = py::reinterpret_borrow<py::object>(PyExc_KeyboardInterrupt)();
+        interrupt.attr("result") = py::cast(std::move(result));
+        PyErr_SetObject(PyExc_KeyboardInterrupt, interrupt.ptr());
+        throw py::error_already_set();
+    }
     return result;
 }
 
@@ -336,6 +346,32 @@ PYBIND11_MODULE(wavefront, m) {
                    ", " + std::to_string(r.summary.spp) + " spp on " + r.summary.device + ">";
         });
 
+    m.def(
+        "write_image",
+        [](const std::filesystem::path& path, py::array_t<float, py::array::c_style | py::array::forcecast> rgb,
+           float exposure, bool half) {
+            if (rgb.ndim() != 3 || rgb.shape(2) != 3) throw py::type_error("write_image(): image takes a height x width x 3 array");
+            Image image;
+            image.width = uint32_t(rgb.shape(1));
+            image.height = uint32_t(rgb.shape(0));
+            image.rgb.assign(rgb.data(), rgb.data() + rgb.size());
+            check_can_write(path.string());
+            write_image(path.string(), image, ImageMetadata{}, {}, ImageEncoding{half, exposure});
+        },
+        py::arg("path"), py::arg("image"), py::arg("exposure") = 0.0f, py::arg("half") = false,
+        "Writes linear radiance (height x width x 3) as the command line does: the extension picks the format; "
+        "8-bit formats get 2^exposure and the sRGB curve, float formats keep radiance (half=True: 16-bit)");
+    m.def(
+        "srgb",
+        [](py::array_t<float, py::array::c_style | py::array::forcecast> rgb, float exposure) {
+            py::array_t<float> out(std::vector<py::ssize_t>(rgb.shape(), rgb.shape() + rgb.ndim()));
+            const float scale = std::exp2(exposure);
+            for (py::ssize_t i = 0; i < rgb.size(); ++i) out.mutable_data()[i] = srgb_encode(rgb.data()[i] * scale);
+            return out;
+        },
+        py::arg("image"), py::arg("exposure") = 0.0f,
+        "The display image of linear radiance: scaled by 2^exposure (the command line's --exposure), clipped to "
+        "[0, 1] and sRGB-encoded, as an 8-bit output holds it; for matplotlib's imshow");
     m.def(
         "read_image", [](const std::filesystem::path& path) { return to_array(read_image(path.string())); },
         py::arg("path"),

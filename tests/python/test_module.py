@@ -1,5 +1,5 @@
 """test_module.py -- `import wavefront` as a scheduling study uses it: the
-image and bounce layers as NumPy arrays with the command line's bytes,
+image and bounce layers as NumPy arrays with the command line's pixels,
 statistics whose counts agree with one another, every flag as a keyword,
 errors as exceptions with the command line's message, a progress callback,
 and Ctrl-C that stops the render cleanly and raises KeyboardInterrupt.
@@ -110,8 +110,25 @@ def test_progress_is_reported_and_its_errors_stop_the_render(cache):
 
     def fail(_):
         raise ZeroDivisionError("from the callback")
-    with pytest.raises(ZeroDivisionError, match="from the callback"):
+    with pytest.raises(ZeroDivisionError, match="from the callback") as raised:
         wavefront.render(CORNELL, progress=fail, cache_dir=cache, **SMALL)
+    partial = raised.value.result  # what the render had computed when it stopped
+    assert partial.image.shape == (36, 48, 3) and 1 <= partial.spp < 4 and partial.image.mean() > 0.0
+
+
+def test_images_are_written_and_shown_as_the_command_line_writes_them(cache):
+    result = wavefront.render(CORNELL, cache_dir=cache, **SMALL)
+    shown = wavefront.srgb(result.image, exposure=1.0)
+    assert shown.shape == result.image.shape and shown.min() >= 0.0 and 0.9999 < shown.max() <= 1.0  # the lamp clips
+    with tempfile.TemporaryDirectory() as folder:
+        png, exr = os.path.join(folder, "a.png"), pathlib.Path(folder) / "a.exr"
+        wavefront.write_image(png, result.image, exposure=1.0)
+        wavefront.write_image(exr, result.image)
+        assert np.array_equal(wavefront.read_image(exr), result.image)
+        decoded = wavefront.read_image(png)  # 8 bits of the sRGB curve: within half a step of the display image
+        assert np.abs(wavefront.srgb(decoded) - shown).max() <= 0.5 / 255 + 1e-6
+        with pytest.raises(wavefront.InputError, match="no/such/folder"):
+            wavefront.write_image(os.path.join(folder, "no/such/folder/x.png"), result.image)
 
 
 def test_paths_may_be_path_objects(cache):
@@ -191,8 +208,8 @@ def progress(stats):
         print("rendering", flush=True)
 try:
     wavefront.render(sys.argv[1], spp=1 << 20, width=64, cache_dir=sys.argv[2], progress=progress)
-except KeyboardInterrupt:
-    print("interrupted", flush=True)
+except KeyboardInterrupt as stop:
+    print("interrupted", stop.result.image.shape, stop.result.spp > 0, flush=True)
 """
 
 
@@ -201,4 +218,4 @@ def test_ctrl_c_stops_the_render_and_raises_keyboard_interrupt(cache):
     assert child.stdout.readline().strip() == "rendering"  # a sign of life, then the signal
     child.send_signal(signal.SIGINT)
     out, _ = child.communicate(timeout=300)
-    assert child.returncode == 0 and out.strip() == "interrupted"
+    assert child.returncode == 0 and out.strip() == "interrupted (64, 64, 3) True"  # with what it had computed
