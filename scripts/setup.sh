@@ -14,9 +14,10 @@ case "${1:-}" in
   *) echo "scripts/setup.sh: unknown argument '$1' (expected nothing or --tests)" >&2; exit 2 ;;
 esac
 
-# The tests also compile the kernels for AMD GPUs (bench/gpu_isa.py --check).
+# The tests also compile the kernels for AMD GPUs (bench/gpu_isa.py --check)
+# and format the man page for 80 columns (nroff, groff-base).
 extra=()
-if ((tests)); then extra=(clang-15 rocm-device-libs); fi
+if ((tests)); then extra=(clang-15 rocm-device-libs groff-base); fi
 scripts/install_packages.sh "${extra[@]}"
 # The Python module is built for the python3 a user types (Debian's, or one
 # of pyenv's), which needs NumPy, and pytest for the tests: Debian's come from
