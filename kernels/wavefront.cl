@@ -143,7 +143,14 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         local_push(&queue[WF_QUEUE_EXTEND], own);
     /* by the entries this work-item took: */
     uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u, lane_paths = 0u, lane_slots = 0u;
+    /* Work-item 0 counts the paths that entered each queue, for the study of
+     * the schedule; added to the global queues' counters, which this
+     * schedule leaves unused, at the end (CounterSnapshot says so). The
+     * paths that entered generate are those that took a camera sample. */
+    uint entered[WF_QUEUE_COUNT];
+    for (uint q = 0u; q < WF_QUEUE_COUNT; ++q) entered[q] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
+    if (lid == 0) entered[WF_QUEUE_REGENERATE] = queue[WF_QUEUE_EXTEND].length;
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
         if (lid < extending) intersect_path(&path, queue[WF_QUEUE_EXTEND].slots[lid], &scene);
 #ifdef WF_GROUP_LANES
@@ -188,7 +195,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         /* The extension queue is consumed: roulette refills it. */
-        if (lid == 0) queue[WF_QUEUE_EXTEND].length = 0u;
+        if (lid == 0) {
+            entered[WF_QUEUE_EXTEND] += extending;
+            queue[WF_QUEUE_EXTEND].length = 0u;
+        }
         if (lid < queue[WF_QUEUE_SHADOW].length) {
             const uint slot = queue[WF_QUEUE_SHADOW].slots[lid];
             ++shadow_rays;
@@ -206,7 +216,12 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid == 0) queue[WF_QUEUE_SHADOW].length = queue[WF_QUEUE_CONTINUE].length = queue[WF_QUEUE_FINISHED].length = 0u;
+        if (lid == 0) {
+            entered[WF_QUEUE_SHADOW] += queue[WF_QUEUE_SHADOW].length;
+            entered[WF_QUEUE_CONTINUE] += queue[WF_QUEUE_CONTINUE].length;
+            entered[WF_QUEUE_FINISHED] += queue[WF_QUEUE_FINISHED].length;
+            queue[WF_QUEUE_SHADOW].length = queue[WF_QUEUE_CONTINUE].length = queue[WF_QUEUE_FINISHED].length = 0u;
+        }
         barrier(CLK_LOCAL_MEM_FENCE);
     }
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
@@ -216,5 +231,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
+    if (lid == 0)
+        for (uint q = 0u; q < WF_QUEUE_COUNT; ++q)
+            if (entered[q]) atomic_add(&counters[q], entered[q]);
 }
 #endif

@@ -198,7 +198,7 @@ void PathIntegrator::run_whole_paths(Stage stage, const cl::Kernel& kernel) {
     while (samples_held_ + (stats_.samples - samples_counted_) < wanted && !stopping()) {
         launch(stage, kernel, params_.pool_size);
         const uint64_t before = stats_.samples;
-        read_counters(WF_QUEUE_COUNT);
+        read_counters(0); // the queues' counters too: the group schedule counts entries in them
         if (stats_.samples == before)
             throw std::logic_error(std::string(stats_.stages[stage].name) + ": a launch traced no sample");
     }

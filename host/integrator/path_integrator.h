@@ -58,8 +58,10 @@ struct StageTime {
     uint64_t launches = 0;
 };
 
-// What one read of the device counters showed: the queue lengths as read,
-// and the work done since the previous read.
+// What one read of the device counters showed: the queue lengths as read
+// (global-queue schedules), or the paths that entered each queue since the
+// previous read (the group schedule, whose queues are local: its launch
+// counts them; the megakernel has none), and the work done since then.
 struct CounterSnapshot {
     std::array<uint32_t, WF_QUEUE_COUNT> queues{};
     uint32_t closest_rays = 0, shadow_rays = 0, samples = 0;

@@ -145,12 +145,17 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     hooks.write_image = write_image;
     hooks.on_checkpoint = [&](const Checkpoint& c) { result.checkpoints.push_back(c); };
     std::optional<py::error_already_set> raised; // by the callback, raised again once the render has stopped
+    size_t reads_given = 0; // the callback sees the counter reads that came since its last call
     if (progress)
         hooks.on_progress = [&](const RenderStats& s) {
             py::gil_scoped_acquire gil;
             if (raised) return;
+            RenderStats recent = s.without_counter_reads();
+            if (s.counter_reads.size() >= reads_given)
+                recent.counter_reads.assign(s.counter_reads.begin() + reads_given, s.counter_reads.end());
+            reads_given = s.counter_reads.size();
             try {
-                (*progress)(s.without_counter_reads());
+                (*progress)(recent);
             } catch (py::error_already_set& e) {
                 raised = std::move(e);
                 g_stop.store(SIGINT);
@@ -287,8 +292,9 @@ PYBIND11_MODULE(wavefront, m) {
                                "finished paths by bounces: bucket 0 holds 0, bucket b holds [2^(b-1), 2^b)")
         .def_property_readonly("counter_reads", &counter_reads,
                                "one row per read of the counters, as counter_read_columns names them: the "
-                               "queues' lengths as read, then closest rays, shadow rays and samples since the "
-                               "previous read")
+                               "queues' lengths as read (the group schedule: the paths that entered each queue "
+                               "since the previous read), then closest rays, shadow rays and samples since the "
+                               "previous read; in progress(stats), the reads since its previous call")
         .def("__repr__",
              [](const RenderStats& s) {
                  std::ostringstream text;

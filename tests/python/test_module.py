@@ -131,6 +131,21 @@ def test_images_are_written_and_shown_as_the_command_line_writes_them(cache):
             wavefront.write_image(os.path.join(folder, "no/such/folder/x.png"), result.image)
 
 
+def test_the_study_sees_every_stage_in_the_default_schedule(cache):
+    given = []
+    result = wavefront.render(CORNELL, cache_dir=cache, progress=lambda s: given.append(s.counter_reads),
+                              **SMALL)
+    stats, columns = result.stats, wavefront.Stats.counter_read_columns
+    assert stats.schedule == "group"  # the CPU's default: one launch a round, its queues local
+    total = stats.counter_reads.sum(axis=0)
+    entered = dict(zip(columns, total))
+    assert entered["regenerate"] == entered["finished"] == stats.samples == 48 * 36 * 4
+    assert entered["extend"] == stats.closest_rays and entered["shadow"] == stats.shadow_rays > 0
+    assert 0 < entered["continue"] <= entered["extend"]
+    # The callback sees each read once: the reads since its previous call.
+    assert sum(len(reads) for reads in given) == len(stats.counter_reads) and len(given[-1]) >= 1
+
+
 def test_paths_may_be_path_objects(cache):
     path = pathlib.Path(CORNELL)
     assert wavefront.load_scene(path).triangles == 32
