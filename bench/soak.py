@@ -225,44 +225,47 @@ def growth(samples, warmup=WARMUP):
 def cli_soak(runs, cache_dir, folder, report=None):
     """Runs `wavefront render --device all` `runs` times on the box; each must
     exit 0 and give the first run's pixels (the files differ in their date).
-    Returns each run's (seconds, peak RSS in KiB) and this process's
-    resources() after each run."""
+    Returns the image and, for each run, its seconds, its peak RSS in KiB
+    (through GNU time, where /usr/bin/time is installed: a child's own
+    ru_maxrss would count the pages of this process it was forked from) and
+    this process's resources() after it."""
     binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
-    flags = [f"--{k}={v}" for k, v in SMALL.items()]
+    out, peak = os.path.join(folder, "cli.exr"), os.path.join(folder, "peak")
+    timed = ["/usr/bin/time", "-f", "%M", "-o", peak] if os.path.exists("/usr/bin/time") else []
+    command = timed + [binary, "render", BOX, "--device", "all", "-o", out, "--cache-dir", cache_dir, "--quiet"]
+    command += [f"--{k}={v}" for k, v in SMALL.items()]
     first, rows = None, []
     for run in range(runs):
-        out = os.path.join(folder, "cli.exr")
         start = time.monotonic()
-        child = subprocess.Popen([binary, "render", BOX, "--device", "all", "-o", out, "--cache-dir", cache_dir,
-                                  "--quiet"] + flags, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-        err = child.stderr.read()
-        child.stderr.close()
-        _, status, usage = os.wait4(child.pid, 0)
-        child.returncode = os.waitstatus_to_exitcode(status)
+        done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         seconds = time.monotonic() - start
-        if child.returncode != 0:
-            raise AssertionError(f"CLI run {run + 1}: exit {child.returncode}: {err.decode(errors='replace')}")
+        if done.returncode != 0:
+            raise AssertionError(f"CLI run {run + 1}: exit {done.returncode}: {done.stderr.decode(errors='replace')}")
         image = wavefront.read_image(out)
         os.remove(out)
         if first is None:
             first = image
         elif not np.array_equal(image, first):
             raise AssertionError(f"CLI run {run + 1}: the image differs from the first run's")
-        rows.append(dict(seconds=seconds, child_rss_kib=usage.ru_maxrss, **resources()))
+        row = dict(seconds=seconds)
+        if timed:
+            with open(peak) as f:
+                row["child_rss_kib"] = int(f.read().split()[-1])
+        rows.append(dict(row, **resources()))
         if report:
             report(run, rows[-1])
     return first, rows
 
 
-def floors(samples, warmup=WARMUP):
+def floors(samples, warmup=WARMUP, unit="cycles"):
     """One sentence: the floors that growth() compares, and the range."""
     judged = samples[warmup:]
     parts = []
     for key, label in (("heap_kib", "heap"), ("rss_kib", "RSS")):
         mib = [s[key] / 1024.0 for s in judged]
-        parts.append(f"{label} {min(mib[:TAIL]):.2f} MiB at its floor over the first {TAIL} judged cycles, "
+        parts.append(f"{label} {min(mib[:TAIL]):.2f} MiB at its floor over the first {TAIL} judged {unit}, "
                      f"{min(mib[-TAIL:]):.2f} over the last {TAIL} (range {min(mib):.2f}-{max(mib):.2f})")
-    return f"After {warmup} cycles of warm-up: " + "; ".join(parts) + "."
+    return f"after the warm-up ({warmup} {unit[:-1] if warmup == 1 else unit}): " + "; ".join(parts) + "."
 
 
 def table(rows, label, every):
@@ -297,8 +300,10 @@ def main():
 
     device = wavefront.devices()[0]
     say("# Soak: many renders in one process, and the command line with `--device all`\n")
+    count = len(wavefront.devices())
     say(f"{datetime.date.today().isoformat()}, {platform.node() or 'this machine'}: {os.cpu_count()} cores, "
-        f"{len(wavefront.devices())} OpenCL device(s), the first {device.name} ({device.platform}).\n")
+        f"{count} OpenCL device{'s' if count > 1 else ''}, the first {device.name} ({device.platform}, "
+        f"{device.version}){'' if count > 1 else '; `--device all` is that one device'}.\n")
     say("`python3 bench/soak.py " + " ".join(sys.argv[1:]) + "`, load average %.2f at the start (other work shares "
         "these cores; nothing here is a timing).\n" % os.getloadavg()[0])
     with tempfile.TemporaryDirectory() as folder:
@@ -315,9 +320,9 @@ def main():
             f"{module_seconds:.0f} s\n")
         say("Each configuration's image (and its AOV and bounce layers) had the bytes of its first render; "
             "the stopped render stopped at its first report every time. Resources after each cycle "
-            "(OpenCL objects are seen through RSS, threads and maps: the wrappers keep no count):\n")
+            "(OpenCL objects are seen through the heap, RSS, threads and maps: the wrappers keep no count):\n")
         say(table(samples, "cycle", max(1, cycles // args.rows)))
-        say("\n" + floors(samples) + " Verdict: " + ("nothing grew." if not problems else "; ".join(problems)) + "\n")
+        say("\nA" + floors(samples)[1:] + " Verdict: " + ("nothing grew." if not problems else "; ".join(problems)) + "\n")
         start = time.monotonic()
         image, rows = cli_soak(args.cli_runs, cache, folder,
                                report=lambda r, row: print(f"CLI run {r + 1}: {row}", file=sys.stderr, flush=True))
@@ -329,11 +334,12 @@ def main():
             "and this process's resources after it:\n")
         say(table(rows, "run", max(1, args.cli_runs // args.rows)))
         parent = growth(rows, warmup=1)
-        peaks = [row["child_rss_kib"] / 1024.0 for row in rows[1:]]
-        if min(peaks[-TAIL:]) - min(peaks[:TAIL]) > RSS_TOLERANCE_MIB:
+        peaks = [row["child_rss_kib"] / 1024.0 for row in rows[1:] if "child_rss_kib" in row]
+        if peaks and min(peaks[-TAIL:]) - min(peaks[:TAIL]) > RSS_TOLERANCE_MIB:
             parent.append(f"the runs' peak RSS: its floor grew from {min(peaks[:TAIL]):.2f} to {min(peaks[-TAIL:]):.2f} MiB")
-        say(f"\nThe runs' peak RSS: {min(peaks):.2f}-{max(peaks):.2f} MiB after the first. " + floors(rows, warmup=1)
-            + " Verdict: " + ("nothing grew." if not parent else "; ".join(parent)))
+        say((f"\nThe runs' peak RSS: {min(peaks):.2f}-{max(peaks):.2f} MiB after the first. " if peaks else "\n")
+            + "This process (its first run reads an EXR, which starts OpenImageIO's threads and maps what it loads): "
+            + floors(rows, warmup=1, unit="runs") + " Verdict: " + ("nothing grew." if not parent else "; ".join(parent)))
         problems += parent + ([] if same else ["the CLI's image differs from the module's"])
     if args.output:
         with open(args.output, "w") as f:
