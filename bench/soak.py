@@ -81,10 +81,11 @@ CONFIGS = [
 # more than RISING_SHARE of the judged cycles, by more than RISING_MIB in
 # all, is growth too (one 32x24 image copy kept a render, 81 KiB a cycle:
 # the heap rose at 14 of 14 cycles, 1.13 MiB). File descriptors and threads
-# must be exactly what they were after the warm-up. Memory maps may move by
-# MAPS_SLACK lines (glibc maps and unmaps large blocks) but their floor may
-# not rise.
+# must be exactly what they were after the warm-up. Memory maps may grow by
+# MAPS_SLACK lines (glibc and Python map and unmap large blocks and arenas as
+# they go; a leaked program would add maps at every render).
 WARMUP = 3
+CLI_WARMUP = 2  # this process's first two reads of an EXR start OpenImageIO's threads and map what it loads
 TAIL = 3
 HEAP_TOLERANCE_MIB = 1.0
 RSS_TOLERANCE_MIB = 4.0
@@ -195,20 +196,42 @@ class ModuleSoak:
         return resources()
 
 
+FIELDS = ("rss_kib", "heap_kib", "fds", "threads", "maps")  # what resources() returns
+
+
+def record(count, extra=()):
+    """Room for `count` rows of resources() and of the `extra` (name, dtype)
+    fields, allocated before a soak: a list that grew by a dict a run would
+    itself grow RSS (by about 0.4 KiB a run, measured) and, at each new
+    arena of Python's allocator, the maps."""
+    return np.zeros(count, dtype=list(extra) + [(name, "i8") for name in FIELDS])
+
+
+def runs_of(values):
+    """[6, 6, 7, 7, 7] as '6 x2, 7 x3': a long list of counts, short."""
+    out = []
+    for v in values:
+        if out and out[-1][0] == v:
+            out[-1][1] += 1
+        else:
+            out.append([v, 1])
+    return ", ".join(f"{v} x{n}" for v, n in out)
+
+
 def growth(samples, warmup=WARMUP):
-    """The criterion over resources() after each cycle: a list of what grew,
-    empty when nothing did."""
+    """The criterion over resources() after each cycle (a list of dicts or a
+    record()): a list of what grew, empty when nothing did."""
     judged = samples[warmup:]
     if len(judged) < 2 * TAIL:
         raise ValueError(f"{len(samples)} cycles: at least {warmup + 2 * TAIL} are needed to judge growth")
     problems = []
     base = samples[warmup - 1] if warmup else judged[0]
     for key in ("fds", "threads"):
-        counts = [s[key] for s in judged]
+        counts = [int(s[key]) for s in judged]
         if any(c != base[key] for c in counts):
-            problems.append(f"{key}: {base[key]} after the warm-up, then {counts}")
+            problems.append(f"{key}: {base[key]} after the warm-up, then {runs_of(counts)}")
     for key, label, tolerance in (("heap_kib", "heap", HEAP_TOLERANCE_MIB), ("rss_kib", "RSS", RSS_TOLERANCE_MIB)):
-        mib = [s[key] / 1024.0 for s in judged]
+        mib = [float(s[key]) / 1024.0 for s in judged]
         start, end = min(mib[:TAIL]), min(mib[-TAIL:])
         if end - start > tolerance:
             problems.append(f"{label}: its floor grew {end - start:.2f} MiB over {len(judged)} cycles "
@@ -216,29 +239,30 @@ def growth(samples, warmup=WARMUP):
         rises = sum(1 for a, b in zip(mib, mib[1:]) if b > a)
         if rises > RISING_SHARE * (len(mib) - 1) and mib[-1] - mib[0] > RISING_MIB:
             problems.append(f"{label}: rose at {rises} of {len(mib) - 1} cycles, {mib[-1] - mib[0]:.2f} MiB in all")
-    maps = [s["maps"] for s in judged]
-    if max(maps) > base["maps"] + MAPS_SLACK or min(maps[-TAIL:]) > min(maps[:TAIL]):
-        problems.append(f"memory maps: {base['maps']} after the warm-up, then {maps}")
+    maps = [int(s["maps"]) for s in judged]
+    if max(maps) > base["maps"] + MAPS_SLACK:
+        problems.append(f"memory maps: {base['maps']} after the warm-up, then {runs_of(maps)}")
     return problems
 
 
-def cli_soak(runs, cache_dir, folder, report=None):
-    """Runs `wavefront render --device all` `runs` times on the box; each must
-    exit 0 and give the first run's pixels (the files differ in their date).
-    Returns the image and, for each run, its seconds, its peak RSS in KiB
-    (through GNU time, where /usr/bin/time is installed: a child's own
-    ru_maxrss would count the pages of this process it was forked from) and
-    this process's resources() after it."""
+def cli_soak(rows, cache_dir, folder, report=None):
+    """Runs `wavefront render --device all` on the box once for each row of
+    `rows` (a record() with the fields seconds and child_rss_kib): each run
+    must exit 0 and give the first run's pixels (the files differ in their
+    date). Fills in each run's seconds, its peak RSS (through GNU time where
+    /usr/bin/time is installed, else 0: a child's own ru_maxrss would count
+    the pages of this process it was forked from) and this process's
+    resources() after it. Returns the image."""
     binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
     out, peak = os.path.join(folder, "cli.exr"), os.path.join(folder, "peak")
     timed = ["/usr/bin/time", "-f", "%M", "-o", peak] if os.path.exists("/usr/bin/time") else []
     command = timed + [binary, "render", BOX, "--device", "all", "-o", out, "--cache-dir", cache_dir, "--quiet"]
     command += [f"--{k}={v}" for k, v in SMALL.items()]
-    first, rows = None, []
-    for run in range(runs):
+    first = None
+    for run in range(len(rows)):
         start = time.monotonic()
         done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-        seconds = time.monotonic() - start
+        rows["seconds"][run] = time.monotonic() - start
         if done.returncode != 0:
             raise AssertionError(f"CLI run {run + 1}: exit {done.returncode}: {done.stderr.decode(errors='replace')}")
         image = wavefront.read_image(out)
@@ -247,14 +271,14 @@ def cli_soak(runs, cache_dir, folder, report=None):
             first = image
         elif not np.array_equal(image, first):
             raise AssertionError(f"CLI run {run + 1}: the image differs from the first run's")
-        row = dict(seconds=seconds)
         if timed:
             with open(peak) as f:
-                row["child_rss_kib"] = int(f.read().split()[-1])
-        rows.append(dict(row, **resources()))
+                rows["child_rss_kib"][run] = int(f.read().split()[-1])
+        for key, value in resources().items():
+            rows[key][run] = value
         if report:
-            report(run, rows[-1])
-    return first, rows
+            report(run, rows[run])
+    return first
 
 
 def floors(samples, warmup=WARMUP, unit="cycles"):
@@ -262,7 +286,7 @@ def floors(samples, warmup=WARMUP, unit="cycles"):
     judged = samples[warmup:]
     parts = []
     for key, label in (("heap_kib", "heap"), ("rss_kib", "RSS")):
-        mib = [s[key] / 1024.0 for s in judged]
+        mib = [float(s[key]) / 1024.0 for s in judged]
         parts.append(f"{label} {min(mib[:TAIL]):.2f} MiB at its floor over the first {TAIL} judged {unit}, "
                      f"{min(mib[-TAIL:]):.2f} over the last {TAIL} (range {min(mib):.2f}-{max(mib):.2f})")
     return f"after the warm-up ({warmup} {unit[:-1] if warmup == 1 else unit}): " + "; ".join(parts) + "."
@@ -271,7 +295,7 @@ def floors(samples, warmup=WARMUP, unit="cycles"):
 def table(rows, label, every):
     """A Markdown table of every `every`-th row and the last."""
     keys = [k for k in ("renders", "seconds", "child_rss_kib", "rss_kib", "heap_kib", "fds", "threads", "maps")
-            if k in rows[0]]
+            if k in rows.dtype.names]
     heads = dict(renders="renders", seconds="s (run)", child_rss_kib="its peak RSS MiB", rss_kib="RSS MiB",
                  heap_kib="heap MiB", fds="fds", threads="threads", maps="maps")
     out = [f"| {label} | " + " | ".join(heads[k] for k in keys) + " |", "|--:|" + "--:|" * len(keys)]
@@ -287,7 +311,7 @@ def table(rows, label, every):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--renders", type=int, default=1000, help="renders through the module (whole cycles)")
-    parser.add_argument("--cli-runs", type=int, default=50, help="runs of the command line with --device all")
+    parser.add_argument("--cli-runs", type=int, default=1000, help="runs of the command line with --device all")
     parser.add_argument("--rows", type=int, default=20, help="about this many rows in each table")
     parser.add_argument("--output", help="also write the Markdown here (bench/results/soak.md)")
     args = parser.parse_args()
@@ -309,11 +333,12 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         cache = os.path.join(folder, "cache")
         soak = ModuleSoak(cache)
-        samples, start = [], time.monotonic()
+        samples, start = record(cycles, [("renders", "i8")]), time.monotonic()
         for c in range(cycles):
-            measured = soak.cycle()
-            samples.append(dict(renders=soak.renders, **measured))
-            print(f"cycle {c + 1}/{cycles}: {samples[-1]}", file=sys.stderr, flush=True)
+            for key, value in soak.cycle().items():
+                samples[key][c] = value
+            samples["renders"][c] = soak.renders
+            print(f"cycle {c + 1}/{cycles}: {samples[c]}", file=sys.stderr, flush=True)
         module_seconds = time.monotonic() - start
         problems = growth(samples)
         say(f"## The module: {soak.renders} renders, {cycles} cycles of {len(CONFIGS)} configurations, "
@@ -322,24 +347,28 @@ def main():
             "the stopped render stopped at its first report every time. Resources after each cycle "
             "(OpenCL objects are seen through the heap, RSS, threads and maps: the wrappers keep no count):\n")
         say(table(samples, "cycle", max(1, cycles // args.rows)))
-        say("\nA" + floors(samples)[1:] + " Verdict: " + ("nothing grew." if not problems else "; ".join(problems)) + "\n")
+        verdict = "nothing grew." if not problems else "; ".join(problems)
+        say("\nA" + floors(samples)[1:] + " Verdict: " + verdict + "\n")
         start = time.monotonic()
-        image, rows = cli_soak(args.cli_runs, cache, folder,
-                               report=lambda r, row: print(f"CLI run {r + 1}: {row}", file=sys.stderr, flush=True))
+        rows = record(args.cli_runs, [("seconds", "f8"), ("child_rss_kib", "i8")])
+        image = cli_soak(rows, cache, folder,
+                         report=lambda r, row: print(f"CLI run {r + 1}: {row}", file=sys.stderr, flush=True))
         same = np.array_equal(image, soak.first["box"]["image"])
         say(f"## The command line: {args.cli_runs} runs of `wavefront render scenes/cornell-box.gltf --device all`, "
             f"{time.monotonic() - start:.0f} s\n")
-        say("Every run exited 0 with the first run's pixels (compared as arrays: the EXR files differ in their header's date); those pixels "
-            + ("are" if same else "are NOT") + " the module's bytes for the same flags. The peak RSS of each run, "
-            "and this process's resources after it:\n")
+        say("Every run exited 0 with the first run's pixels (compared as arrays: the EXR files differ in their "
+            "header's date); those pixels " + ("are" if same else "are NOT") + " the module's bytes for the same "
+            "flags. The peak RSS of each run, and this process's resources after it:\n")
         say(table(rows, "run", max(1, args.cli_runs // args.rows)))
-        parent = growth(rows, warmup=1)
-        peaks = [row["child_rss_kib"] / 1024.0 for row in rows[1:] if "child_rss_kib" in row]
+        parent = growth(rows, warmup=CLI_WARMUP)
+        peaks = [float(kib) / 1024.0 for kib in rows["child_rss_kib"][1:] if kib]
         if peaks and min(peaks[-TAIL:]) - min(peaks[:TAIL]) > RSS_TOLERANCE_MIB:
-            parent.append(f"the runs' peak RSS: its floor grew from {min(peaks[:TAIL]):.2f} to {min(peaks[-TAIL:]):.2f} MiB")
+            parent.append(f"the runs' peak RSS: its floor grew from {min(peaks[:TAIL]):.2f} "
+                          f"to {min(peaks[-TAIL:]):.2f} MiB")
+        verdict = "nothing grew." if not parent else "; ".join(parent)
         say((f"\nThe runs' peak RSS: {min(peaks):.2f}-{max(peaks):.2f} MiB after the first. " if peaks else "\n")
-            + "This process (its first run reads an EXR, which starts OpenImageIO's threads and maps what it loads): "
-            + floors(rows, warmup=1, unit="runs") + " Verdict: " + ("nothing grew." if not parent else "; ".join(parent)))
+            + "This process (its first runs read EXRs, which start OpenImageIO's threads and maps what it loads): "
+            + floors(rows, warmup=CLI_WARMUP, unit="runs") + " Verdict: " + verdict)
         problems += parent + ([] if same else ["the CLI's image differs from the module's"])
     if args.output:
         with open(args.output, "w") as f:

@@ -53,6 +53,6 @@ def test_the_criterion_sees_each_kind_of_growth():
     assert "RSS: rose at" in grown(lambda i, s: s.update(rss_kib=s["rss_kib"] + 40 * i))
     assert "fds" in grown(lambda i, s: s.update(fds=7) if i == 12 else None)
     assert "threads" in grown(lambda i, s: s.update(threads=9) if i > 10 else None)
-    assert "memory maps" in grown(lambda i, s: s.update(maps=s["maps"] + i // 4))
+    assert "memory maps" in grown(lambda i, s: s.update(maps=s["maps"] + i // 2))
     with pytest.raises(ValueError):
         soak.growth(flat(soak.WARMUP + 2))
