@@ -29,7 +29,7 @@ import datetime
 import os
 import platform
 import re
-import statistics
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -249,11 +249,14 @@ def cli_soak(rows, cache_dir, folder, report=None):
     """Runs `wavefront render --device all` on the box once for each row of
     `rows` (a record() with the fields seconds and child_rss_kib): each run
     must exit 0 and give the first run's pixels (the files differ in their
-    date). Fills in each run's seconds, its peak RSS (through GNU time where
+    date). It runs a copy of the binary taken before the first run, so that
+    a rebuild during the soak neither breaks a run nor changes the program.
+    Fills in each run's seconds, its peak RSS (through GNU time where
     /usr/bin/time is installed, else 0: a child's own ru_maxrss would count
     the pages of this process it was forked from) and this process's
     resources() after it. Returns the image."""
-    binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
+    binary = os.path.join(folder, "wavefront")
+    shutil.copy2(os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront")), binary)
     out, peak = os.path.join(folder, "cli.exr"), os.path.join(folder, "peak")
     timed = ["/usr/bin/time", "-f", "%M", "-o", peak] if os.path.exists("/usr/bin/time") else []
     command = timed + [binary, "render", BOX, "--device", "all", "-o", out, "--cache-dir", cache_dir, "--quiet"]
