@@ -9,18 +9,22 @@ table of the figures.
 
 A cycle renders every configuration of CONFIGS once through
 `wavefront.render`, small (32x24, 2 spp): both Cornell boxes, a loaded Scene
-reused, every schedule with the megakernel, pool and local sizes, the AOV
-and bounce layers, and a render that its progress callback stops by raising.
+reused, every schedule (group, refill, passes, fullest) and the megakernel,
+pool sizes, the AOV and bounce layers, and a render that its progress callback
+stops by raising. (A variant that needs a program of its own costs 3-7 s of
+compiling in the first cycle: the list is kept short enough for the ctest
+version to stay under 60 s on a fresh machine.)
 Each configuration's arrays must have the bytes of its first render; the
 stopped one must stop at its first report. After each cycle the process's
 resident memory, file descriptors, threads and memory maps are read from
 /proc/self, and the heap in use from glibc's malloc_info. OpenCL objects are
 seen only through these: the C++ wrappers keep no count of them, and PoCL's
-CPU device backs a buffer with malloc'd host memory (heap, RSS), a program's
-kernels with a loaded library (maps) and a context with threads.
+CPU device keeps a buffer in malloc'd host memory (heap, RSS), a compiled
+kernel as a loaded library (maps) and its work in threads of its own.
 
 Usage: python3 bench/soak.py [--renders N] [--cli-runs N] [--output FILE]
-       (after scripts/setup.sh; 1000 renders take about N minutes on 2 cores)
+       (after scripts/setup.sh; the defaults, 1000 renders and 1000 runs,
+       take about 6 minutes on 2 cores, 5 of them the command line's runs)
 """
 
 import argparse
@@ -42,7 +46,6 @@ import wavefront
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BOX = os.path.join(ROOT, "scenes", "cornell-box.gltf")
 GLASS = os.path.join(ROOT, "scenes", "cornell-glass.gltf")
-RESULTS = os.path.join(ROOT, "bench", "results")
 SMALL = dict(width=32, height=24, spp=2, seed=7)
 LOADED = "loaded"  # stands for the one Scene object that every cycle reuses
 STOPPED = "stopped"
@@ -54,11 +57,12 @@ CONFIGS = [
     ("glass", GLASS, {}),
     ("loaded scene", LOADED, {}),
     ("refill, pool 256", BOX, dict(schedule="refill", pool_size=256)),
-    ("group, local 32", GLASS, dict(schedule="group", local_size=32)),
+    ("group, pool 512", GLASS, dict(schedule="group", pool_size=512)),
+    ("passes, pool 640", BOX, dict(schedule="passes", pool_size=640)),
     ("fullest, pool 500", BOX, dict(schedule="fullest", pool_size=500)),
     ("megakernel", GLASS, dict(integrator="megakernel")),
-    ("albedo, normal, depth", BOX, dict(aov=["albedo", "normal", "depth"])),
-    ("bounces, refill", GLASS, dict(aov="bounces", schedule="refill", pool_size=384)),
+    ("every AOV and layer, refill", GLASS, dict(aov=["albedo", "normal", "depth", "bounces"], schedule="refill",
+                                                 pool_size=384)),
     (STOPPED, BOX, dict(spp=1024)),
 ]
 
@@ -70,20 +74,23 @@ CONFIGS = [
 # about one cycle in five), and a leak raises the floor. The heap in use
 # (malloc_info) is the sharp measure: RSS does not move while a leak fills
 # blocks that were freed but stay resident (the kernel compiler leaves
-# plenty). Measured here over 30 cycles of a sound soak: the heap's floor
-# drifted 44 KiB and RSS's 0.9 MiB; keeping each Result alive (image,
-# variance, AOV and bounce layers: about 28 KiB a render) raised the heap
-# 278 KiB a cycle, RSS under 1 MiB over 24 cycles. Hence
-# HEAP_TOLERANCE_MIB, 1 MiB: 20 times that drift, passed by that leak within
-# 4 cycles; and RSS_TOLERANCE_MIB, 4 MiB, four times RSS's noise, for what
-# the heap does not see (pages PoCL or Python map themselves). A leak too
-# slow for these still rises at nearly every cycle: memory that rises at
-# more than RISING_SHARE of the judged cycles, by more than RISING_MIB in
-# all, is growth too (one 32x24 image copy kept a render, 81 KiB a cycle:
-# the heap rose at 14 of 14 cycles, 1.13 MiB). File descriptors and threads
-# must be exactly what they were after the warm-up. Memory maps may grow by
-# MAPS_SLACK lines (glibc and Python map and unmap large blocks and arenas as
-# they go; a leaked program would add maps at every render).
+# plenty). Measured here: a sound soak's heap floor drifts by under 100
+# bytes a render (0.04-0.10 MiB over 1000 in three long soaks,
+# bench/results/soak.md), its RSS moves up and down by up to 1.4 MiB (pages
+# trimmed and touched again); keeping each Result alive (image, variance,
+# AOV and bounce layers: about 35 KiB a render) raised the heap's floor
+# 3.3 MiB in 15 cycles and RSS by under 1 MiB in 24. Hence
+# HEAP_TOLERANCE_MIB, 1 MiB: ten times the drift of 100 cycles, passed by
+# that leak within 4 cycles; and RSS_TOLERANCE_MIB, 4 MiB, about three times
+# RSS's noise, for what the heap does not see (pages that PoCL or Python map
+# themselves). A leak too slow for these still rises at
+# nearly every cycle: memory that rises at more than RISING_SHARE of the
+# judged cycles, by more than RISING_MIB in all, is growth too (one 32x24
+# image copy kept a render, 81 KiB a cycle: the heap rose at 14 of 14
+# cycles, 1.12 MiB). File descriptors and threads must be exactly what they
+# were after the warm-up. Memory maps may grow by MAPS_SLACK lines (glibc
+# and Python map and unmap large blocks and arenas as they go; a leaked
+# program would add maps at every render).
 WARMUP = 3
 CLI_WARMUP = 2  # this process's first two reads of an EXR start OpenImageIO's threads and map what it loads
 TAIL = 3
@@ -187,7 +194,9 @@ class ModuleSoak:
                 continue
             result = wavefront.render(scene, cache_dir=self.cache_dir, **flags)
             now = arrays(result)
-            first = self.first.setdefault(name, {k: v.copy() for k, v in now.items()})
+            if name not in self.first:
+                self.first[name] = {k: v.copy() for k, v in now.items()}
+            first = self.first[name]
             if sorted(now) != sorted(first):
                 raise AssertionError(f"{name}: render {self.renders} returned {sorted(now)}, the first {sorted(first)}")
             for key, array in now.items():
@@ -344,6 +353,7 @@ def main():
             print(f"cycle {c + 1}/{cycles}: {samples[c]}", file=sys.stderr, flush=True)
         module_seconds = time.monotonic() - start
         problems = growth(samples)
+        say("The criterion (what may not grow, and how far each figure may move): the comment above WARMUP in bench/soak.py.\n")
         say(f"## The module: {soak.renders} renders, {cycles} cycles of {len(CONFIGS)} configurations, "
             f"{module_seconds:.0f} s\n")
         say("Each configuration's image (and its AOV and bounce layers) had the bytes of its first render; "
