@@ -97,9 +97,10 @@ std::map<std::string, int> check_lines(const std::string& path, const std::strin
         const std::string line = trimmed(without_comment(path, number, raw));
         if (line.empty()) continue;
         if (line.front() == '[') {
-            if (line.size() < 3 || line.back() != ']' || line[1] == '[' || !is_bare_key(trimmed(line.substr(1, line.size() - 2))))
+            const std::string name = line.size() < 3 ? "" : trimmed(line.substr(1, line.size() - 2));
+            if (line.back() != ']' || line[1] == '[' || !is_bare_key(name))
                 refuse(path, number, excerpt(line) + " is not a [section] heading");
-            section = trimmed(line.substr(1, line.size() - 2));
+            section = name;
             continue;
         }
         const size_t equals = line.find('=');

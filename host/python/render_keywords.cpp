@@ -49,7 +49,7 @@ const FlagInfo* find_flag(const std::string& keyword) {
 
 bool is_bool(py::handle v) { return py::isinstance<py::bool_>(v); }
 bool is_whole(py::handle v) { return !is_bool(v) && py::hasattr(v, "__index__"); } // int, NumPy's integers
-bool is_real(py::handle v) { return !is_bool(v) && (is_whole(v) || py::isinstance<py::float_>(v) || py::hasattr(v, "__float__")); }
+bool is_real(py::handle v) { return !is_bool(v) && (is_whole(v) || py::hasattr(v, "__float__")); } // float, NumPy's
 bool is_path(py::handle v) { return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"); }
 
 // device=: an index, a name ("cpu", "all"), a Device, or a list of those.
@@ -116,7 +116,7 @@ py::object default_value(const FlagInfo& f) {
     } catch (const std::exception&) {
     }
     if (kind == Kind::Text && f.type.find("{") != std::string::npos) {
-        const std::string choices = "," + f.type.substr(f.type.find('{') + 1) ;
+        const std::string choices = "," + f.type.substr(f.type.find('{') + 1);
         if (choices.find("," + text + ",") != std::string::npos || choices.find("," + text + "}") != std::string::npos)
             return py::str(text);
     }
