@@ -161,10 +161,14 @@ std::vector<ConfigFlag> read_config_flags(const CLI::App& render, const std::str
     std::map<std::string, int> flag_lines; // `spp` and `render.spp` are one flag
     for (const CLI::ConfigItem& item : items) {
         if (item.name == "++" || item.name == "--") continue; // CLI11's markers of a section's start and end
-        const auto where = lines.find(item.fullname());
+        // `[ render ]` is `[render]`: TOML allows the spaces, CLI11 keeps them.
+        std::string full = trimmed(item.name);
+        for (auto parent = item.parents.rbegin(); parent != item.parents.rend(); ++parent)
+            full = trimmed(*parent) + "." + full;
+        const auto where = lines.find(full);
         const int line = where == lines.end() ? 0 : where->second;
-        const std::string name = excerpt(item.fullname());
-        const bool ours = item.parents.empty() || (item.parents.size() == 1 && item.parents[0] == "render");
+        const std::string name = excerpt(full);
+        const bool ours = item.parents.empty() || (item.parents.size() == 1 && trimmed(item.parents[0]) == "render");
         const std::string flag = "--" + item.name;
         if (!ours || item.name == "config" || !render.get_option_no_throw(flag))
             refuse(path, line, name + " is not a render flag");

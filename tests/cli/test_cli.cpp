@@ -82,7 +82,7 @@ TEST_F(Cli, HelpDocumentsEveryFlagWithItsDefault) {
 // --config FILE holds flags in TOML, at the top or under [render]; flags on
 // the command line win; a key that is no render flag, or a bad value, is named.
 TEST_F(Cli, AConfigFileHoldsFlagsAndTheCommandLineWins) {
-    write("render.toml", "spp = 3\n[render]\nwidth = 24\nseed = 7\n");
+    write("render.toml", "spp = 3\n[ render ]\nwidth = 24\nseed = 7\n"); // TOML allows the spaces
     const test::ProcessResult r = run("render " + kCornell + " --config " + path("render.toml") + " --spp=5 -o " +
                                       path("c.exr"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
