@@ -197,12 +197,10 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (layers && hooks.write_image && !holds_float_radiance(options.output))
         throw InputError(options.output + ": --aov layers need a float format such as .exr");
     std::optional<Image> reference;
-    if (!options.reference.empty()) {
+    if (hooks.reference) reference = *hooks.reference;
+    const std::string reference_name = hooks.reference ? std::string("the reference") : options.reference;
+    if (!reference && !options.reference.empty()) {
         reference = read_image(options.reference);
-        if (reference->width != size.width || reference->height != size.height)
-            throw InputError(options.reference + ": the reference is " + std::to_string(reference->width) + "x" +
-                             std::to_string(reference->height) + " but the render is " + std::to_string(size.width) +
-                             "x" + std::to_string(size.height));
         if (reference->stored.levels > 0) {
             // Assumed written as this command would write an 8-bit image.
             reference->stored.exposure = options.exposure;
@@ -210,6 +208,10 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
                 << " levels a channel: the render is compared with it clipped to [0, 1] and quantised as it is\n";
         }
     }
+    if (reference && (reference->width != size.width || reference->height != size.height))
+        throw InputError(reference_name + ": the reference is " + std::to_string(reference->width) + "x" +
+                         std::to_string(reference->height) + " but the render is " + std::to_string(size.width) + "x" +
+                         std::to_string(size.height));
 
     const std::vector<OpenClDevice> devices = open_devices(options.device);
     std::vector<const OpenClDevice*> chosen;

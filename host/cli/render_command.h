@@ -19,6 +19,8 @@ struct RenderHooks {
     // The scene, loaded already from options.scene (with options.camera); a
     // copy of it is lit as the options say.
     const Scene* scene = nullptr;
+    // The reference, given as an image rather than as options.reference.
+    const Image* reference = nullptr;
     // Called once the renderer is ready, before it resumes or renders.
     std::function<void(Renderer&, ImageSize)> add_workers;
     // Set (to a signal's number) to stop the render as Ctrl-C does; without

@@ -15,8 +15,6 @@
 #include <optional>
 #include <sstream>
 
-#include <unistd.h>
-
 #include <pybind11/eval.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -88,41 +86,27 @@ private:
     struct sigaction previous_ {};
 };
 
-// reference= given as an array: written to a float image in a folder of its
-// own, which goes when the render does.
-class ArrayReference {
-public:
-    explicit ArrayReference(py::dict& options) {
-        if (!options.contains("reference") || !py::isinstance<py::array>(options["reference"])) return;
-        const auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(options["reference"]);
-        if (!a || a.ndim() != 3 || a.shape(2) != 3)
-            throw py::type_error("render(): reference takes a path or a height x width x 3 array");
-        Image image;
-        image.width = uint32_t(a.shape(1));
-        image.height = uint32_t(a.shape(0));
-        image.rgb.assign(a.data(), a.data() + a.size());
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("wavefront-reference-" + std::to_string(::getpid()) + "-" + std::to_string(++count_));
-        std::filesystem::create_directories(folder_);
-        write_image((folder_ / "reference.exr").string(), image, ImageMetadata{});
-        options["reference"] = (folder_ / "reference.exr").string();
-    }
-    ~ArrayReference() {
-        std::error_code ignored;
-        if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
-    }
-
-private:
-    std::filesystem::path folder_;
-    static inline std::atomic<int> count_{0};
-};
+// reference= given as an array: the image the render is compared with,
+// handed to the render in memory (RenderHooks::reference); None otherwise.
+std::optional<Image> array_reference(py::dict& options) {
+    if (!options.contains("reference") || !py::isinstance<py::array>(options["reference"])) return std::nullopt;
+    const auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(options["reference"]);
+    if (!a || a.ndim() != 3 || a.shape(2) != 3)
+        throw py::type_error("render(): reference takes a path or a height x width x 3 array");
+    Image image;
+    image.width = uint32_t(a.shape(1));
+    image.height = uint32_t(a.shape(0));
+    image.rgb.assign(a.data(), a.data() + a.size());
+    PyDict_DelItemString(options.ptr(), "reference"); // not a flag's text
+    return image;
+}
 
 PyResult render(py::object scene, std::optional<py::function> progress, const py::kwargs& keywords) {
     const bool loaded = py::isinstance<PyScene>(scene);
     const std::string path = loaded ? scene.cast<const PyScene&>().path
                                     : py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
     py::dict options(keywords);
-    const ArrayReference reference(options);
+    const std::optional<Image> reference = array_reference(options);
     RenderOptions parsed = parse_render(path, options);
     // None is the flag's default, as if not given (the signature shows None).
     const auto given = [&](const char* name) { return options.contains(name) && !options[name].is_none(); };
@@ -140,6 +124,7 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     FilmReadout film;
     RenderHooks hooks;
     hooks.scene = loaded ? &scene.cast<const PyScene&>().scene : nullptr;
+    hooks.reference = reference ? &*reference : nullptr;
     hooks.stop = &g_stop;
     hooks.film = &film;
     hooks.write_image = write_image;
