@@ -52,10 +52,21 @@ bool is_whole(py::handle v) { return !is_bool(v) && py::hasattr(v, "__index__");
 bool is_real(py::handle v) { return !is_bool(v) && (is_whole(v) || py::hasattr(v, "__float__")); } // float, NumPy's
 bool is_path(py::handle v) { return py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"); }
 
+std::string whole_word(py::handle v) { return py::str(py::int_(v.attr("__index__")())); }
+
+bool is_list(py::handle v) { return py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v); }
+
+// A list's items as one comma-separated word (aov=["albedo", "depth"]).
+template <class Word> std::string comma_joined(py::handle list, const Word& word) {
+    std::string joined;
+    for (py::handle item : list) joined += (joined.empty() ? "" : ",") + word(item);
+    return joined;
+}
+
 // device=: an index, a name ("cpu", "all"), a Device, or a list of those.
 std::string device_word(const std::string& keyword, py::handle v) {
     if (py::hasattr(v, "index") && py::hasattr(v, "platform")) return py::str(v.attr("index"));
-    if (is_whole(v)) return py::str(py::int_(v.attr("__index__")()));
+    if (is_whole(v)) return whole_word(v);
     if (py::isinstance<py::str>(v)) return v.cast<std::string>();
     wrong_type(keyword, "a Device, an index, a name or a list of them", v);
 }
@@ -64,7 +75,7 @@ std::string value_word(const FlagInfo& f, const std::string& keyword, py::handle
     switch (kind_of(f)) {
     case Kind::Flag: break; // handled by the caller
     case Kind::Whole:
-        if (is_whole(v)) return py::str(py::int_(v.attr("__index__")()));
+        if (is_whole(v)) return whole_word(v);
         // A bound that also takes a word (--max-depth unlimited).
         if (py::isinstance<py::str>(v) && f.type.find("or " + v.cast<std::string>()) != std::string::npos)
             return v.cast<std::string>();
@@ -76,20 +87,15 @@ std::string value_word(const FlagInfo& f, const std::string& keyword, py::handle
         if (is_path(v)) return py::str(py::module_::import("os").attr("fspath")(v));
         wrong_type(keyword, "a str or os.PathLike", v);
     case Kind::Text:
-        if (f.name == "device" && (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v))) {
-            std::string joined;
-            for (py::handle item : v) joined += (joined.empty() ? "" : ",") + device_word(keyword, item);
-            return joined;
+        if (f.name == "device") {
+            const auto device = [&](py::handle item) { return device_word(keyword, item); };
+            return is_list(v) ? comma_joined(v, device) : device(v);
         }
-        if (f.name == "device") return device_word(keyword, v);
-        if (f.name == "aov" && (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v))) {
-            std::string joined;
-            for (py::handle item : v) {
+        if (f.name == "aov" && is_list(v))
+            return comma_joined(v, [&](py::handle item) {
                 if (!py::isinstance<py::str>(item)) wrong_type(keyword, "a str or a list of str", item);
-                joined += (joined.empty() ? "" : ",") + item.cast<std::string>();
-            }
-            return joined;
-        }
+                return item.cast<std::string>();
+            });
         if (py::isinstance<py::str>(v)) return v.cast<std::string>();
         wrong_type(keyword, "a str", v);
     }
