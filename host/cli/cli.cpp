@@ -148,7 +148,7 @@ void add_cache_dir(CLI::App& command, std::string& directory) {
 
 // The render command's flags, each filling its field of `o`.
 struct RenderFlags {
-    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, config;
+    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, kernels, config;
     std::vector<std::string> aovs;
     CLI::Option *schedule_flag = nullptr, *spp_flag = nullptr;
 };
@@ -226,6 +226,11 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                       with_default("Paths a work-item in the group schedule's BSDF lanes: 1, 8 or 16, or 0 for 8 "
                                    "on a CPU of 8-float vectors or wider (1 elsewhere); the same image", s.lane_width))
         ->check(CLI::IsMember({0u, 1u, 8u, 16u}));
+    f.kernels = kernel_kind_name(s.kernels);
+    render.add_option("--kernels", f.kernels,
+                      with_default("Build the kernels for a cpu or a gpu, whatever the device, to test one kind's "
+                                   "kernels on another; auto: for the device's kind; the same image", f.kernels))
+        ->check(CLI::IsMember(names_of(kKernelKindNames)));
     render.add_option("--stats-json", o.stats_json,
                       with_default("Write the render's statistics as JSON: stage times, rays, counters per iteration",
                                    "none"))
@@ -330,6 +335,7 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
     s.integrator = static_cast<Integrator>(index_of(kIntegratorNames, f.integrator));
     s.schedule = static_cast<Schedule>(index_of(kScheduleNames, f.schedule));
     s.queue_push = static_cast<QueuePush>(index_of(kQueuePushNames, f.queue_push));
+    s.kernels = static_cast<KernelKind>(index_of(kKernelKindNames, f.kernels));
     s.light_sampling = index_of(kLightSamplingNames, f.light_sampling);
     s.hemisphere = index_of(kHemisphereNames, f.hemisphere);
     s.sampler = index_of(kSamplerNames, f.sampler);

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "base/alias_table.h"
+#include "bsdf/albedo_tables.h"
 #include "bsdf/coat_fresnel.h"
 #include "device/bsdf_kind_choice.h"
 #include "device/device_buffer.h"
@@ -141,6 +142,14 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         store3(dm.emission, m.emission);
         dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);
+    }
+    // A GPU's program reads the glass table from here (bsdf/albedo.h); only glass reads it at all.
+    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const SceneMaterial& m) {
+            return m.transmission > 0.0f;
+        }))
+    {
+        const auto& table = wf_device::glass_albedo_table;
+        d.glass_albedo.assign(&table[0][0][0][0], &table[0][0][0][0] + sizeof(table) / sizeof(float));
     }
     // A material reads COLOR_0 where any of its corners is not white (add_texture_data uploads them all).
     if (!d.colors.empty())

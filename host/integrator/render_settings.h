@@ -32,11 +32,17 @@ enum class Schedule {
 // in the order of its WF_PUSH_* values.
 enum class QueuePush { Group, Atomic, Scan };
 
+// Which device kind's kernels to build (render_program_source, device_renderer.h):
+// the device's own, or another kind's, so that a GPU's kernels run and are
+// tested on a CPU device.
+enum class KernelKind { Cpu, Gpu, Auto };
+
 // Each choice's names, indexed by its enum or WF_* value.
 using ChoiceNames = std::array<const char*, 5>; // unused entries are null
 constexpr ChoiceNames kIntegratorNames = {"wavefront", "megakernel", nullptr};
 constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest", "group", "auto"};
 constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
+constexpr ChoiceNames kKernelKindNames = {"cpu", "gpu", "auto"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
 constexpr ChoiceNames kSamplerNames = {"independent", "sobol", nullptr};
@@ -56,6 +62,7 @@ inline std::optional<uint32_t> choice_value(const ChoiceNames& names, const std:
 }
 inline const char* integrator_name(Integrator i) { return choice_name(kIntegratorNames, static_cast<uint32_t>(i)); }
 inline const char* schedule_name(Schedule s) { return choice_name(kScheduleNames, static_cast<uint32_t>(s)); }
+inline const char* kernel_kind_name(KernelKind k) { return choice_name(kKernelKindNames, static_cast<uint32_t>(k)); }
 inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushNames, static_cast<uint32_t>(p)); }
 
 // Paths in flight when the command line names none (at most the pixel count).
@@ -99,6 +106,7 @@ struct RenderSettings {
     // or 16 paths a work-item; 0: 8 on a device of 8-float vectors or wider,
     // else 1 (render/device_renderer.cpp). The same bytes at every width.
     uint32_t lane_width = 0;
+    KernelKind kernels = KernelKind::Auto; // Auto: the device's kind
     // While it holds non-zero, no sample starts: the paths in flight end and
     // the round returns early, each slot's pixels then one sample apart at most.
     const std::atomic<int>* stop = nullptr;

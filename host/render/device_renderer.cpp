@@ -38,12 +38,13 @@ Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) 
 
 // The group schedule's lanes: as asked, else 8 where the device's vectors hold
 // 8 floats or more (AVX2, AVX-512), and 1 (no lanes) on devices of narrower
-// vectors, GPUs among them, whose work-items are lanes already. Not 16 on
-// AVX-512: on the Cornell box 16 lanes ran 0.88-0.90x the speed of 8, with
-// 67% of them filled against 82% (bench/results/shading-lanes.md).
-unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings) {
+// vectors, GPUs among them, whose work-items are lanes already (so in a GPU's
+// kernels wherever they run). Not 16 on AVX-512: on the Cornell box 16 lanes
+// ran 0.88-0.90x the speed of 8, with 67% of them filled against 82%
+// (bench/results/shading-lanes.md).
+unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings, bool gpu_kernels) {
     if (settings.lane_width != 0) return settings.lane_width;
-    return device.native_float_width >= 8 ? 8u : 1u;
+    return device.native_float_width >= 8 && !gpu_kernels ? 8u : 1u;
 }
 
 } // namespace
@@ -53,8 +54,10 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     RenderProgramSource p;
     p.root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
     p.options = feature_defines(features);
+    const bool gpu = settings.kernels == KernelKind::Auto ? device.type != "cpu" : settings.kernels == KernelKind::Gpu;
     // Device functions a GPU's linker can always find (wavefront/compat.h); PoCL runs faster without.
-    if (device.type != "cpu") p.options += " -DWF_STATIC_FUNCTIONS=1";
+    // And the glass table out of the constant bank, which holds 64 KiB on NVIDIA's GPUs (bsdf/albedo.h).
+    if (gpu) p.options += " -DWF_STATIC_FUNCTIONS=1 -DWF_GLASS_TABLE_IN_SCENE=1";
     if (settings.aovs) p.options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
         p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
@@ -63,7 +66,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     if (settings.queue_push == QueuePush::Scan || group)
         p.options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
     // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
-    if (const unsigned lanes = lane_width(device, settings); group && lanes > 1)
+    if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
     return p;
 }

@@ -27,6 +27,7 @@
     X(MaterialTextureParams, material_textures, "normal scale and alpha mode, one per material")      \
     X(TriangleTexcoords, texcoords, "per triangle in BVH order; empty without textures")              \
     X(TriangleTangents, tangents, "per triangle in BVH order; empty without textures")                \
-    X(TriangleColors, colors, "COLOR_0 per triangle in BVH order; empty where all are white")
+    X(TriangleColors, colors, "COLOR_0 per triangle in BVH order; empty where all are white")            \
+    X(float, glass_albedo, "bsdf/albedo_tables.h's glass table, for GPUs (WF_GLASS_TABLE_IN_SCENE)")
 
 #endif /* WAVEFRONT_SCENE_BUFFERS_H */

@@ -9,7 +9,7 @@
  *    (schlick_albedo).
  *  - ggx_albedo_average(r): their hemispherical averages 2 ∫ E mu dmu, of the
  *    same interpolant, so the lobes below integrate exactly.
- *  - glass_albedo(mu, r, ior, inside): E_g, a white solid glass's whole
+ *  - glass_albedo(table, mu, r, ior, inside): E_g, a white solid glass's whole
  *    albedo, GGX reflection and refraction under the exact Fresnel term (the
  *    refraction's 1/eta'^2 undone), trilinear in (sqrt(mu), r,
  *    (ior - 1) / (ior + 1)), for a view from outside or inside.
@@ -109,7 +109,23 @@ WF_INLINE float loss_pdf(float roughness, float mu) {
     return mass * (float)(WF_ALBEDO_SIZE - 1) / (4.0f * WF_PI * x);
 }
 
-WF_INLINE float glass_albedo(float mu, float roughness, float ior, int inside) {
+/* Where glass_albedo's table lives: the program's own __constant copy, or, in a
+ * GPU's program (WF_GLASS_TABLE_IN_SCENE), the scene buffer of the same floats:
+ * NVIDIA's constant bank holds 64 KiB and the table is 96 KiB. BsdfParams
+ * carries it there (bsdf.h); WF_GLASS_TABLE(p) names it either way. */
+#if WF_GLASS_TABLE_IN_SCENE
+typedef __global const float* GlassAlbedoTable;
+#define WF_GLASS_TABLE(p) ((p)->glass_table)
+#else
+#ifdef __OPENCL_C_VERSION__
+typedef __constant float* GlassAlbedoTable;
+#else
+typedef const float* GlassAlbedoTable;
+#endif
+#define WF_GLASS_TABLE(p) (&glass_albedo_table[0][0][0][0])
+#endif
+
+WF_INLINE float glass_albedo(GlassAlbedoTable table, float mu, float roughness, float ior, int inside) {
     float tm, tr, tx;
     const int m = albedo_cell(sqrt(max(mu, 0.0f)), &tm), r = albedo_cell(roughness, &tr);
     const int x = grid_cell((ior - 1.0f) / ((ior + 1.0f) * WF_GLASS_MAX_X), WF_GLASS_IOR_SIZE, &tx);
@@ -117,7 +133,8 @@ WF_INLINE float glass_albedo(float mu, float roughness, float ior, int inside) {
     float v[2][2];
     for (int i = 0; i < 2; ++i)
         for (int k = 0; k < 2; ++k) {
-            const float lo = glass_albedo_table[side][x + i][r + k][m], hi = glass_albedo_table[side][x + i][r + k][m + 1];
+            GlassAlbedoTable row = table + ((side * WF_GLASS_IOR_SIZE + x + i) * WF_ALBEDO_SIZE + r + k) * WF_ALBEDO_SIZE;
+            const float lo = row[m], hi = row[m + 1];
             v[i][k] = lo + tm * (hi - lo);
         }
     const float a = v[0][0] + tr * (v[0][1] - v[0][0]), b = v[1][0] + tr * (v[1][1] - v[1][0]);

@@ -575,6 +575,9 @@ WF_CONSTANT float sheen_albedo_table[WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {
      0.253886f, 0.237918f, 0.221974f, 0.206024f, 0.190034f, 0.173965f, 0.157777f, 0.141444f},
 };
 
+/* 96 KiB: more than a GPU's constant bank holds, so a GPU's program reads it from
+ * the scene's glass_albedo buffer instead (bsdf/albedo.h). */
+#if !WF_GLASS_TABLE_IN_SCENE
 WF_CONSTANT float glass_albedo_table[2][WF_GLASS_IOR_SIZE][WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {
     {
         {{0.82848f, 0.99764f, 0.99986f, 0.99997f, 0.99999f, 1.00000f, 1.00000f, 1.00000f,
@@ -3653,6 +3656,7 @@ WF_CONSTANT float glass_albedo_table[2][WF_GLASS_IOR_SIZE][WF_ALBEDO_SIZE][WF_AL
           0.40716f, 0.38933f, 0.37288f, 0.35733f, 0.34273f, 0.32899f, 0.31588f, 0.30342f}},
     },
 };
+#endif
 
 WF_DEVICE_END
 

@@ -229,8 +229,10 @@ int main() {
             std::printf("%s%.6ff", m ? (m % 8 ? ", " : ",\n     ") : "", sheen_albedo(grid_mu(m), grid_roughness(r)));
         std::printf("},\n");
     }
-    std::printf("};\n\nWF_CONSTANT float glass_albedo_table[2][WF_GLASS_IOR_SIZE][WF_ALBEDO_SIZE]"
-                "[WF_ALBEDO_SIZE] = {\n");
+    std::printf("};\n\n/* 96 KiB: more than a GPU's constant bank holds, so a GPU's program reads it from\n"
+                " * the scene's glass_albedo buffer instead (bsdf/albedo.h). */\n"
+                "#if !WF_GLASS_TABLE_IN_SCENE\n"
+                "WF_CONSTANT float glass_albedo_table[2][WF_GLASS_IOR_SIZE][WF_ALBEDO_SIZE][WF_ALBEDO_SIZE] = {\n");
     for (int inside = 0; inside < 2; ++inside) {
         std::printf("    {\n");
         for (int i = 0; i < kGlassIorSize; ++i) {
@@ -247,6 +249,6 @@ int main() {
         }
         std::printf("    },\n");
     }
-    std::printf("};\n\nWF_DEVICE_END\n\n#endif /* WF_ALBEDO_TABLES_H */\n");
+    std::printf("};\n#endif\n\nWF_DEVICE_END\n\n#endif /* WF_ALBEDO_TABLES_H */\n");
     return 0;
 }

@@ -143,6 +143,9 @@ typedef struct BsdfParams {
     float3 sheen_color;        /* KHR_materials_sheen: black for none */
     float sheen_roughness;
     uint32_t hemisphere; /* WF_HEMISPHERE_*: how the diffuse lobe samples */
+#if WF_GLASS_TABLE_IN_SCENE
+    __global const float* glass_table; /* the scene's copy of glass_albedo_table (bsdf/albedo.h) */
+#endif
 } BsdfParams;
 
 typedef struct BsdfSample {
@@ -250,7 +253,7 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
     a.layer_o = bsdf_layer_albedo(p, &a, a.at_o);
     a.layer_average = bsdf_layer_albedo(p, &a, a.average);
     a.glass_scale = bsdf_has_inside(p) && !bsdf_interface_smooth(p)
-                        ? 1.0f / glass_albedo(fabs(mu_o), p->roughness, p->ior, mu_o < 0.0f)
+                        ? 1.0f / glass_albedo(WF_GLASS_TABLE(p), fabs(mu_o), p->roughness, p->ior, mu_o < 0.0f)
                         : 1.0f;
     a.coat_at_o = make_float2(1.0f, 0.0f);
     a.coat_e_average = 1.0f;

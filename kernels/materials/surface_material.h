@@ -22,6 +22,9 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     const float4 base = surface_texture(scene, p, WF_TEXTURE_BASE_COLOR);
     const float4 metallic_roughness = surface_texture(scene, p, WF_TEXTURE_METALLIC_ROUGHNESS);
     BsdfParams b;
+#if WF_GLASS_TABLE_IN_SCENE
+    b.glass_table = scene->glass_albedo;
+#endif
     b.base_color = vload3(0, m->base_color) * base.xyz * surface_vertex_color(scene, p).xyz;
     b.metallic = m->metallic * metallic_roughness.z;
     b.roughness = m->roughness * metallic_roughness.y;
