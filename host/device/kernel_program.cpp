@@ -1,7 +1,14 @@
 // kernel_program.cpp — clBuildProgram with the log turned into a readable error.
+//
+// Two variables serve whoever ports the kernels to a new device: WF_KERNEL_OPTIONS
+// adds to every program's build options (-cl-nv-verbose has NVIDIA's compiler
+// report each kernel's registers and spills), and WF_KERNEL_BUILD_LOG names a
+// file that each compile's whole log is appended to.
 #include "device/kernel_program.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 #include "base/errors.h"
@@ -20,6 +27,20 @@ std::string first_error_line(const std::string& log) {
     return first_nonempty;
 }
 
+std::string build_options(const std::string& options) {
+    const char* extra = std::getenv("WF_KERNEL_OPTIONS");
+    return "-cl-std=CL1.2 " + options + (extra && *extra ? std::string(" ") + extra : std::string());
+}
+
+void append_build_log(const OpenClDevice& device, const std::string& source_path, const std::string& options,
+                      const cl::Program& program) {
+    const char* path = std::getenv("WF_KERNEL_BUILD_LOG");
+    if (!path || !*path) return;
+    std::ofstream out(path, std::ios::app);
+    out << "== " << source_path << " on " << device.info.name << ": " << options << "\n"
+        << program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device) << "\n";
+}
+
 } // namespace
 
 KernelProgram build_kernel_program(const OpenClDevice& device, const std::string& source_path,
@@ -27,7 +48,7 @@ KernelProgram build_kernel_program(const OpenClDevice& device, const std::string
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const std::string source = expand_kernel_source(source_path);
-    const std::string all_options = "-cl-std=CL1.2 " + options;
+    const std::string all_options = build_options(options);
     const std::string key = cache ? program_cache_key(device.info, all_options, source) : std::string();
     KernelProgram result;
     if (cache) {
@@ -47,10 +68,12 @@ KernelProgram build_kernel_program(const OpenClDevice& device, const std::string
     try {
         result.program.build({device.info.device}, all_options.c_str());
     } catch (const cl::Error&) {
+        append_build_log(device, source_path, all_options, result.program);
         const std::string log = result.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device);
         throw DeviceError("kernel " + source_path + " failed to build on " + device.info.name + ": " +
                           first_error_line(log));
     }
+    append_build_log(device, source_path, all_options, result.program);
     if (cache) {
         const auto binaries = result.program.getInfo<CL_PROGRAM_BINARIES>();
         if (!binaries.empty() && !binaries.front().empty()) cache->store(key, binaries.front());
