@@ -3,8 +3,10 @@
 // the CPU, over the very same rays in the same run (the throughput study's
 // measurement: ours against Embree's single-ray API, same rays, same threads).
 //
-//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--json OUT.json]
+//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--json OUT.json]
 //
+// --device takes what `wavefront render --device` does (default cpu: ours and
+// Embree on the same cores).
 // Three sets of about N rays each: the camera rays of one sample per pixel
 // (coherent), diffuse bounces from points spread over the surfaces by area
 // (incoherent), and shadow segments between two such points (any hit). Our
@@ -53,6 +55,7 @@ struct Options {
     std::string scene;
     uint32_t rays = 1u << 20;
     unsigned threads = 2;
+    std::string device = "cpu";
     std::string json;
 };
 
@@ -65,13 +68,14 @@ uint32_t positive(const std::string& flag, const std::string& value) {
 }
 
 Options parse(int argc, const char** argv) {
-    const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--json OUT.json]";
+    const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--json OUT.json]";
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
         if (a == "--rays" && has_value) o.rays = positive(a, argv[++i]);
         else if (a == "--threads" && has_value) o.threads = positive(a, argv[++i]);
+        else if (a == "--device" && has_value) o.device = argv[++i];
         else if (a == "--json" && has_value) o.json = argv[++i];
         else if (a.rfind("--", 0) != 0 && o.scene.empty()) o.scene = a;
         else throw InputError("unexpected argument '" + a + "'; " + usage);
@@ -224,7 +228,7 @@ void write_json(const std::string& path, const Report& r) {
 int run(const Options& options) {
     const Scene scene = load_gltf(options.scene);
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
-    const OpenClDevice device = open_device("cpu");
+    const OpenClDevice device = open_device(options.device);
     check_shared_layouts(device);
     const SceneBuild build(scene); // as a render builds it, the BVH's build timed
     const Bvh& bvh = build.bvh;

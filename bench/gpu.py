@@ -1,0 +1,311 @@
+#!/usr/bin/env python3
+"""gpu.py -- the prepared GPU run (issue 29): on a machine with an OpenCL GPU,
+in a few minutes, what the renderer does there and how fast, written to
+OUT/gpu-run.md and OUT/gpu-run.json with the device named.
+
+    bench/gpu.sh [--out DIR] [--bin DIR] [--real DIR] [--budget SECONDS] [--references DIR]
+
+In order of what matters most, each step skipped once the budget is spent:
+  1. `wavefront devices` (and the start-up layout check) on the GPU;
+  2. correctness: the Cornell box and three more scenes at 256 wide, 16 spp,
+     seed 1, with each integrator. The wavefront and the megakernel must give
+     the same pixels (relMSE 0); against CPU renders of the same seed made
+     beforehand (--make-references DIR, on a CPU device), relMSE is printed
+     beside that of an independent CPU render (seed 2), the noise's own scale;
+  3. throughput: 1024-wide renders for --time seconds after a 1-spp warm-up
+     that compiles the program (the first compile of each is timed too):
+     the wavefront (its GPU schedule) and the megakernel on six scenes, then
+     the Cornell box under every schedule and pool size;
+  4. wavefront_ray_bench --device gpu on three scenes (our kernels on the GPU,
+     Embree on every host core, the same rays).
+Only the standard library; the programs are --bin's (default build/, and
+build/bench/ for the ray bench; a bench/portable_bundle.py bundle's bin/).
+"""
+
+import argparse
+import json
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CHECK_SCENES = [  # name, path (scene-relative to the repository or --real), extra flags
+    ("Cornell box", "scenes/cornell-box.gltf", []),
+    ("glass sphere", "scenes/cornell-glass.gltf", []),
+    ("glossy teapot", "scenes/cornell-teapot.gltf", []),
+    ("MetalRoughSpheresNoTextures", "real:MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf", []),
+]
+SPEED_SCENES = CHECK_SCENES + [
+    ("ToyCar", "real:ToyCar/ToyCar.gltf", []),
+    ("DamagedHelmet", "real:DamagedHelmet/DamagedHelmet.glb", ["--env-uniform", "1"]),
+]
+RAY_SCENES = ["scenes/cornell-box.gltf", "real:MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf",
+              "real:ToyCar/ToyCar.gltf"]
+INTEGRATORS = [("wavefront", []), ("megakernel", ["--integrator", "megakernel"])]
+SCHEDULES = [("passes", ["--schedule", "passes"]),  # the wavefront rows above are refill, a GPU's default
+             ("fullest", ["--schedule", "fullest"]), ("refill, sorted", ["--schedule", "refill", "--sort-materials"])]
+POOLS = [65536, 262144, 1048576]  # at most the 1024² pixels
+
+
+class Run:
+    def __init__(self, args):
+        self.args = args
+        self.deadline = time.monotonic() + args.budget
+        self.log = open(os.path.join(args.out, "gpu-run.log"), "a")
+        self.tmp = tempfile.mkdtemp(prefix="wf-gpu-")
+        self.env = dict(os.environ, XDG_CACHE_HOME=os.path.join(self.tmp, "cache"))
+        self.data = {"machine": {"host": platform.node(), "cpu": cpu_name(), "cores": os.cpu_count()},
+                     "device": None, "checks": [], "builds": [], "speed": [], "rays": [], "skipped": []}
+
+    def left(self):
+        return self.deadline - time.monotonic()
+
+    def scene(self, path):
+        return os.path.join(self.args.real, path[5:]) if path.startswith("real:") else os.path.join(ROOT, path)
+
+    def program(self, name):
+        for d in (self.args.bin, os.path.join(self.args.bin, "bench")):
+            if os.path.exists(os.path.join(d, name)):
+                return os.path.join(d, name)
+        sys.exit(f"gpu.py: no {name} under {self.args.bin}")
+
+    def call(self, what, command, limit=150):
+        """Runs command, logged; returns it completed, or None (failed, timed out or out of budget)."""
+        if self.left() < 10:
+            self.data["skipped"].append(what)
+            return None
+        start = time.monotonic()
+        self.log.write(f"\n$ {' '.join(command)}\n")
+        self.log.flush()
+        try:
+            done = subprocess.run(command, env=self.env, capture_output=True, text=True,
+                                  timeout=min(limit, self.left()))
+        except subprocess.TimeoutExpired as e:
+            self.log.write(f"[timed out after {time.monotonic() - start:.0f} s]\n{e.stdout or ''}{e.stderr or ''}")
+            self.data["skipped"].append(what + " (timed out)")
+            return None
+        self.log.write(done.stdout + done.stderr + f"[exit {done.returncode}, {time.monotonic() - start:.1f} s]\n")
+        self.log.flush()
+        if done.returncode != 0:
+            self.data["skipped"].append(f"{what} (exit {done.returncode}: {last_line(done.stderr)})")
+            return None
+        return done
+
+    def render(self, what, scene, flags, out="out.exr", limit=150):
+        stats = os.path.join(self.tmp, "stats.json")
+        command = [self.program("wavefront"), "render", self.scene(scene), "-o", os.path.join(self.tmp, out),
+                   "--device", self.args.device, "--stats-json", stats, "--quiet"] + flags
+        if self.call(what, command, limit) is None:
+            return None
+        with open(stats) as f:
+            s = json.load(f)
+        if not s["times"]["kernels_from_cache"]:  # the first render of a program compiled it
+            self.data["builds"].append({"scene": what.split(" ", 1)[1], "integrator": s["integrator"],
+                                        "schedule": s["schedule"], "features": s["features"],
+                                        "seconds": s["times"]["kernel_build"]})
+        return s
+
+    def save(self):
+        with open(os.path.join(self.args.out, "gpu-run.json"), "w") as f:
+            json.dump(self.data, f, indent=1)
+        with open(os.path.join(self.args.out, "gpu-run.md"), "w") as f:
+            f.write(markdown(self.data))
+
+
+def cpu_name():
+    try:
+        with open("/proc/cpuinfo") as f:
+            return next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
+    except (OSError, StopIteration):
+        return platform.processor()
+
+
+def last_line(text):
+    lines = [l for l in text.strip().splitlines() if l.strip()]
+    return lines[-1][:200] if lines else ""
+
+
+def relmse(run, what, scene, flags, image, reference):
+    """relMSE of a render's image against `reference`, from its --report CSV."""
+    csv = os.path.join(run.tmp, "report.csv")
+    if run.render(what, scene, flags + ["--reference", reference, "--report", csv], image) is None:
+        return None
+    with open(csv) as f:
+        return float(f.read().strip().splitlines()[-1].split(",")[3])
+
+
+def check_step(run, name, scene, extra):
+    base = ["--width", "256", "--spp", "16", "--seed", "1"] + extra
+    row = {"scene": name}
+    stem = os.path.basename(scene).split(".")[0]
+    wave = os.path.join(run.tmp, f"{stem}-wavefront.exr")
+    s = run.render(f"check {name} wavefront", scene, base, wave)
+    if s is None:
+        return
+    row["nonfinite_samples"] = s["nonfinite_samples"]
+    row["wavefront_vs_megakernel"] = relmse(run, f"check {name} megakernel", scene,
+                                            base + ["--integrator", "megakernel"], "mega.exr", wave)
+    refs = run.args.references
+    if refs and os.path.exists(os.path.join(refs, f"{stem}-seed1.exr")):
+        row["gpu_vs_cpu_same_seed"] = relmse(run, f"check {name} vs cpu", scene, base, "same.exr",
+                                             os.path.join(refs, f"{stem}-seed1.exr"))
+        row["cpu_vs_cpu_other_seed"] = relmse(run, f"check {name} vs cpu seed 2", scene, base, "other.exr",
+                                              os.path.join(refs, f"{stem}-seed2.exr"))
+    run.data["checks"].append(row)
+    run.save()
+
+
+def speed_row(run, label, name, scene, flags):
+    seconds = run.args.seconds
+    warm = run.render(f"warm-up {name} {label}", scene, ["--width", "64", "--spp", "1"] + flags)
+    if warm is None:
+        return
+    s = run.render(f"speed {name} {label}", scene,
+                   ["--width", "1024", "--spp", "65536", "--time", str(seconds), "--seed", "1"] + flags,
+                   limit=seconds * 4 + 60)
+    if s is None:
+        return
+    render = s["times"]["render"]
+    stages = s["stages"]
+    closest = sum(v["seconds"] for k, v in stages.items() if k.startswith("intersect") and "shadow" not in k)
+    run.data["speed"].append({
+        "scene": name, "config": label, "triangles": s["triangles"], "spp": s["spp"], "seconds": render,
+        "msamples_per_s": s["samples"] / render * 1e-6,
+        "mrays_per_s": (s["closest_rays"] + s["shadow_rays"]) / render * 1e-6,
+        "closest_mrays_per_s_kernel": s["closest_rays"] / closest * 1e-6 if closest else None,
+        "host_share": (render - s["times"]["kernels"]) / render, "pool_size": s["pool_size"],
+        "schedule": s["schedule"], "integrator": s["integrator"], "features": s["features"],
+        "stage_seconds": {k: v["seconds"] for k, v in stages.items()}})
+    run.save()
+
+
+def ray_step(run, scene):
+    out = os.path.join(run.tmp, "rays.json")
+    done = run.call(f"rays {scene}", [run.program("wavefront_ray_bench"), run.scene(scene), "--device", run.args.device,
+                                      "--rays", str(run.args.rays), "--threads", str(os.cpu_count()),
+                                      "--json", out], limit=240)
+    if done is not None:
+        with open(out) as f:
+            run.data["rays"].append(json.load(f))
+        run.save()
+
+
+def markdown(d):
+    dev = d["device"] or "(no GPU found)"
+    m = d["machine"]
+    lines = [f"# GPU run: {dev}", "",
+             f"`bench/gpu.sh` on {m['host']}: {m['cpu']}, {m['cores']} cores (Embree's threads). "
+             "Everything below is one run of the script.", ""]
+    if d["checks"]:
+        lines += ["## Correctness (256 wide, 16 spp, seed 1)", "",
+                  "relMSE of the GPU's wavefront image against: the GPU's megakernel (same bytes: 0), a CPU render "
+                  "of the same seed, and, for scale, a CPU render of another seed.", "",
+                  "| scene | megakernel | CPU, same seed | CPU, seed 2 | non-finite samples |", "|---|--:|--:|--:|--:|"]
+        for c in d["checks"]:
+            f = lambda k: "-" if c.get(k) is None else f"{c[k]:.3g}"
+            lines.append(f"| {c['scene']} | {f('wavefront_vs_megakernel')} | {f('gpu_vs_cpu_same_seed')} | "
+                         f"{f('cpu_vs_cpu_other_seed')} | {c.get('nonfinite_samples', '-')} |")
+        lines.append("")
+    if d["builds"]:
+        lines += ["## Kernel builds (the driver's compile, cold)", "", "| first render | program | features | seconds |",
+                  "|---|---|---|--:|"]
+        lines += [f"| {b['scene']} | {b['integrator']}, {b['schedule']} | {b['features']} | {b['seconds']:.2f} |"
+                  for b in d["builds"]]
+        lines.append("")
+    if d["speed"]:
+        lines += ["## Throughput (1024 wide, timed renders)", "",
+                  "| scene | triangles | configuration | spp | M samples/s | M rays/s | intersect kernel M rays/s "
+                  "| host share |", "|---|--:|---|--:|--:|--:|--:|--:|"]
+        for s in d["speed"]:
+            k = s["closest_mrays_per_s_kernel"]
+            lines.append(f"| {s['scene']} | {s['triangles']} | {s['config']} | {s['spp']} | "
+                         f"{s['msamples_per_s']:.1f} | {s['mrays_per_s']:.0f} | {'-' if k is None else f'{k:.0f}'} | "
+                         f"{100 * s['host_share']:.1f}% |")
+        lines.append("")
+    if d["rays"]:
+        lines += ["## Rays (wavefront_ray_bench --device gpu)", "",
+                  "| scene | triangles | set | rays | ours M rays/s | Embree 1 M rays/s | Embree 8 | ours/Embree "
+                  "| agreement |", "|---|--:|---|--:|--:|--:|--:|--:|--:|"]
+        for r in d["rays"]:
+            for s in r["sets"]:
+                p = s.get("embree_packet8_mrays_per_s")
+                lines.append(f"| {os.path.basename(r['scene'])} | {r['triangles']} | {s['set']} | {s['rays']} | "
+                             f"{s['ours_mrays_per_s']:.0f} | {s['embree_mrays_per_s']:.0f} | "
+                             f"{'-' if p is None else f'{p:.0f}'} | {s['ours_over_embree']:.2f} | "
+                             f"{100 * s['agreement']:.3f}% |")
+        lines.append("")
+    if d["skipped"]:
+        lines += ["## Not done", ""] + [f"- {s}" for s in d["skipped"]] + [""]
+    return "\n".join(lines)
+
+
+def make_references(args):
+    """The CPU renders the checks compare against: seeds 1 and 2 of each check scene."""
+    os.makedirs(args.make_references, exist_ok=True)
+    wavefront = os.path.join(args.bin, "wavefront")
+    for _, scene, extra in CHECK_SCENES:
+        path = os.path.join(args.real, scene[5:]) if scene.startswith("real:") else os.path.join(ROOT, scene)
+        stem = os.path.basename(scene).split(".")[0]
+        for seed in (1, 2):
+            subprocess.run([wavefront, "render", path, "--device", "cpu", "--width", "256", "--spp", "16",
+                            "--seed", str(seed), "--quiet", "-o",
+                            os.path.join(args.make_references, f"{stem}-seed{seed}.exr")] + extra, check=True)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--out", default=os.path.join(ROOT, "bench", "results"))
+    p.add_argument("--bin", default=os.path.join(ROOT, "build"))
+    p.add_argument("--real", default=os.path.join(ROOT, "..", "shared", "scenes-real"))
+    p.add_argument("--budget", type=float, default=420, help="seconds for the whole run (default 420)")
+    p.add_argument("--seconds", type=float, default=3, help="each timed render's length (default 3)")
+    p.add_argument("--rays", type=int, default=4000000)
+    p.add_argument("--device", default="gpu", help="the OpenCL device, as `wavefront render --device` (default gpu)")
+    p.add_argument("--references", help="CPU renders of the check scenes, from --make-references")
+    p.add_argument("--make-references", metavar="DIR", help="render them on the CPU device into DIR, and stop")
+    args = p.parse_args()
+    if args.make_references:
+        return make_references(args)
+    os.makedirs(args.out, exist_ok=True)
+    run = Run(args)
+    try:
+        done = run.call("devices", [run.program("wavefront"), "devices"], limit=60)
+        kind = f"type {args.device}" if args.device in ("gpu", "cpu") else ""
+        if done is None or kind not in done.stdout:
+            run.save()
+            sys.exit(f"gpu.py: `wavefront devices` lists no OpenCL {args.device} device (see gpu-run.log)")
+        gpu = next(b for b in done.stdout.split("\n[") if kind in b)
+        run.data["device"] = re.sub(r"^\[?\d+\]\s*", "", " ".join(l.strip() for l in gpu.splitlines()))
+        run.save()
+        name, scene, extra = CHECK_SCENES[0]
+        check_step(run, name, scene, extra)
+        for label, flags in INTEGRATORS:
+            speed_row(run, label, name, scene, extra + flags)
+        ray_step(run, RAY_SCENES[0])
+        for name, scene, extra in SPEED_SCENES[3:]:
+            for label, flags in INTEGRATORS:
+                speed_row(run, label, name, scene, extra + flags)
+        for scene in RAY_SCENES[1:]:
+            ray_step(run, scene)
+        for name, scene, extra in CHECK_SCENES[1:]:
+            check_step(run, name, scene, extra)
+        for name, scene, extra in SPEED_SCENES[1:3]:
+            for label, flags in INTEGRATORS:
+                speed_row(run, label, name, scene, extra + flags)
+        name, scene, extra = CHECK_SCENES[0]
+        for label, flags in SCHEDULES:
+            speed_row(run, label, name, scene, extra + flags)
+        for pool in POOLS:
+            speed_row(run, f"pool {pool}", name, scene, extra + ["--pool-size", str(pool)])
+    finally:
+        run.save()
+        shutil.rmtree(run.tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
