@@ -284,6 +284,8 @@ def main():
         run.save()
         name, scene, extra = CHECK_SCENES[0]
         check_step(run, name, scene, extra)
+        if not run.data["checks"]:  # the simplest program failed: the rest would fail alike, slowly
+            sys.exit("gpu.py: the Cornell box does not render on the device (see gpu-run.log)")
         for label, flags in INTEGRATORS:
             speed_row(run, label, name, scene, extra + flags)
         ray_step(run, RAY_SCENES[0])

@@ -40,8 +40,10 @@ typedef int int32_t;
 #define WF_INLINE inline
 #define WF_FORCE_INLINE inline __attribute__((always_inline))
 #endif
-/* OpenCL's prefetch() does nothing on PoCL; clang's builtin does. */
-#ifdef __clang__
+/* OpenCL's prefetch() does nothing on PoCL; clang's builtin does, on a CPU,
+ * where every address space is one. A GPU's compiler (NVIDIA's) refuses a
+ * __global pointer for its generic one; a GPU has no use for it. */
+#if defined(__clang__) && (defined(__x86_64__) || defined(__aarch64__))
 #define WF_PREFETCH(p) __builtin_prefetch(p)
 #else
 #define WF_PREFETCH(p)
