@@ -49,7 +49,7 @@ RAY_SCENES = ["scenes/cornell-box.gltf", "real:MetalRoughSpheresNoTextures/Metal
 INTEGRATORS = [("wavefront", []), ("megakernel", ["--integrator", "megakernel"])]
 SCHEDULES = [("passes", ["--schedule", "passes"]),  # the wavefront rows above are refill, a GPU's default
              ("fullest", ["--schedule", "fullest"]), ("refill, sorted", ["--schedule", "refill", "--sort-materials"])]
-POOLS = [65536, 262144, 1048576]  # at most the 1024² pixels
+POOLS = [262144, 1048576, 4194304]  # at most the pixels: these rows render 2048 wide
 
 
 class Run:
@@ -160,13 +160,13 @@ def check_step(run, name, scene, extra):
     run.save()
 
 
-def speed_row(run, label, name, scene, flags):
+def speed_row(run, label, name, scene, flags, width=1024):
     seconds = run.args.seconds
     warm = run.render(f"warm-up {name} {label}", scene, ["--width", "64", "--spp", "1"] + flags)
     if warm is None:
         return
     s = run.render(f"speed {name} {label}", scene,
-                   ["--width", "1024", "--spp", "65536", "--time", str(seconds), "--seed", "1"] + flags,
+                   ["--width", str(width), "--spp", "65536", "--time", str(seconds), "--seed", "1"] + flags,
                    limit=seconds * 4 + 60)
     if s is None:
         return
@@ -195,6 +195,30 @@ def ray_step(run, scene):
         run.save()
 
 
+def registers(log_path):
+    """Per kernel of each distinct program: registers, stack frame, spills and
+    shared memory, from NVIDIA's -cl-nv-verbose report in a WF_KERNEL_BUILD_LOG."""
+    rows, seen, program, kernel = [], set(), None, None
+    with open(log_path, errors="replace") as f:
+        for line in f:
+            if line.startswith("== "):
+                root, _, options = line[3:].partition(": ")
+                on = [o[9:-2].lower() for o in options.split() if o.startswith("-DWF_HAS_") and o.endswith("=1")]
+                key = (root.split(" on ")[0], " ".join(sorted(set(options.split()))))
+                program = None if key in seen else f"{key[0]} ({', '.join(on) or 'no features'})"
+                seen.add(key)
+            elif program and (m := re.search(r"Compiling entry function '(\w+)'", line)):
+                kernel = {"program": program, "kernel": m.group(1)}
+            elif program and kernel and (m := re.search(r"(\d+) bytes stack frame, (\d+) bytes spill stores", line)):
+                kernel["stack"], kernel["spill_stores"] = int(m.group(1)), int(m.group(2))
+            elif program and kernel and (m := re.search(r"Used (\d+) registers", line)):
+                smem = re.search(r"(\d+) bytes smem", line)
+                kernel.update(registers=int(m.group(1)), smem=int(smem.group(1)) if smem else 0)
+                rows.append(kernel)
+                kernel = None
+    return [r for r in rows if not r["program"].startswith("layout_probe")]
+
+
 def markdown(d):
     dev = d["device"] or "(no GPU found)"
     m = d["machine"]
@@ -218,7 +242,7 @@ def markdown(d):
                   for b in d["builds"]]
         lines.append("")
     if d["speed"]:
-        lines += ["## Throughput (1024 wide, timed renders)", "",
+        lines += ["## Throughput (timed renders, 1024 wide unless the row says)", "",
                   "| scene | triangles | configuration | spp | M samples/s | M rays/s | intersect kernel M rays/s "
                   "| host share |", "|---|--:|---|--:|--:|--:|--:|--:|"]
         for s in d["speed"]:
@@ -238,6 +262,13 @@ def markdown(d):
                              f"{s['ours_mrays_per_s']:.0f} | {s['embree_mrays_per_s']:.0f} | "
                              f"{'-' if p is None else f'{p:.0f}'} | {s['ours_over_embree']:.2f} | "
                              f"{100 * s['agreement']:.3f}% |")
+        lines.append("")
+    if d.get("registers"):
+        lines += ["## Registers (NVIDIA's compiler, -cl-nv-verbose)", "",
+                  "| program | kernel | registers | stack frame (bytes) | spill stores | shared memory |",
+                  "|---|---|--:|--:|--:|--:|"]
+        lines += [f"| {r['program']} | {r['kernel']} | {r['registers']} | {r.get('stack', '-')} | "
+                  f"{r.get('spill_stores', '-')} | {r['smem']} |" for r in d["registers"]]
         lines.append("")
     if d["skipped"]:
         lines += ["## Not done", ""] + [f"- {s}" for s in d["skipped"]] + [""]
@@ -302,9 +333,14 @@ def main():
         name, scene, extra = CHECK_SCENES[0]
         for label, flags in SCHEDULES:
             speed_row(run, label, name, scene, extra + flags)
-        for pool in POOLS:
-            speed_row(run, f"pool {pool}", name, scene, extra + ["--pool-size", str(pool)])
+        for label, flags in INTEGRATORS:
+            for pool in POOLS:
+                speed_row(run, f"{label}, pool {pool}, 2048 wide", name, scene,
+                          extra + flags + ["--pool-size", str(pool)], width=2048)
     finally:
+        log = os.environ.get("WF_KERNEL_BUILD_LOG")
+        if log and os.path.exists(log):
+            run.data["registers"] = registers(log)
         run.save()
         shutil.rmtree(run.tmp, ignore_errors=True)
 

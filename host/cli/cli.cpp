@@ -195,7 +195,9 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--pool-size", s.pool_size,
                       with_default("Paths in flight, at most the pixel count",
                                    std::to_string(kDefaultCpuPoolSize) + " for the wavefront on a CPU, where they " +
-                                       "stay in cache, " + std::to_string(kDefaultGpuPoolSize) + " otherwise"))
+                                       "stay in cache, " + std::to_string(kDefaultPoolSize) + " for the megakernel there; on a " +
+                                       "GPU " + std::to_string(kGpuPathsPerComputeUnit) + " a compute unit, at least " +
+                                       std::to_string(kDefaultPoolSize)))
         ->check(whole_number(1, 1u << 26));
     render.add_option("--camera", o.camera,
                       with_default("Index of the glTF camera to use",

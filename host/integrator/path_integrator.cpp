@@ -71,8 +71,9 @@ Stage RenderStats::whole_path_stage() const {
     return schedule == Schedule::Group ? STAGE_GROUP : STAGE_COUNT;
 }
 
-uint32_t default_pool_size(const std::string& device_type, Integrator integrator) {
-    return device_type == "cpu" && integrator == Integrator::Wavefront ? kDefaultCpuPoolSize : kDefaultGpuPoolSize;
+uint32_t default_pool_size(const std::string& device_type, unsigned compute_units, Integrator integrator) {
+    if (device_type == "cpu") return integrator == Integrator::Wavefront ? kDefaultCpuPoolSize : kDefaultPoolSize;
+    return std::max(kDefaultPoolSize, std::min(compute_units, 1u << 12) * kGpuPathsPerComputeUnit);
 }
 
 Schedule default_schedule(const std::string& device_type, bool sort_materials) {

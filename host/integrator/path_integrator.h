@@ -114,9 +114,9 @@ struct RenderStats {
     Stage whole_path_stage() const;
 };
 
-// The default pool for a device of this type ("cpu", "gpu", ...; DeviceInfo::type)
-// and integrator.
-uint32_t default_pool_size(const std::string& device_type, Integrator integrator);
+// The default pool for a device of this type ("cpu", "gpu", ...; DeviceInfo::type),
+// compute units and integrator (render_settings.h says why).
+uint32_t default_pool_size(const std::string& device_type, unsigned compute_units, Integrator integrator);
 
 // The schedule a wavefront render runs when none is asked for: on a CPU,
 // group, whose stages keep a work-group's paths in one core's caches (1.2-1.5x

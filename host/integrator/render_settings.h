@@ -66,14 +66,20 @@ inline const char* kernel_kind_name(KernelKind k) { return choice_name(kKernelKi
 inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushNames, static_cast<uint32_t>(p)); }
 
 // Paths in flight when the command line names none (at most the pixel count).
-// A GPU hides memory latency with many paths in flight. On a CPU the
-// wavefront runs each stage over the whole pool, so a pool whose state stays
-// in the caches is faster: 2^15 paths are 4 MiB of path state, and on the
-// Cornell box, 512 wide, 64 spp, PoCL on 2 cores, the wavefront ran 1.5-1.7x
-// faster than with 2^18. The megakernel takes each path through every stage
-// at once and ran 5-10% faster with the larger pool.
-constexpr uint32_t kDefaultGpuPoolSize = 1u << 18;
+// A GPU hides memory latency with many paths in flight: kGpuPathsPerComputeUnit
+// a compute unit, four times the 2048 threads an NVIDIA multiprocessor holds
+// at once, and at least kDefaultPoolSize. On an H200 (132 units) the
+// wavefront ran the Cornell box 1024 wide at 307 M samples/s with 2^20 paths
+// and 211 with 2^18, the launches' host share 17% against 37%
+// (bench/results/gpu-run.md). On a CPU the wavefront runs each stage over the
+// whole pool, so a pool whose state stays in the caches is faster: 2^15 paths
+// are 4 MiB of path state, and on the Cornell box, 512 wide, 64 spp, PoCL on
+// 2 cores, the wavefront ran 1.5-1.7x faster than with 2^18. The megakernel
+// takes each path through every stage at once and ran 5-10% faster with the
+// larger pool.
+constexpr uint32_t kDefaultPoolSize = 1u << 18;
 constexpr uint32_t kDefaultCpuPoolSize = 1u << 15;
+constexpr uint32_t kGpuPathsPerComputeUnit = 8192;
 
 // Bounces a path may take when the command line names no bound. Unlimited,
 // a path of throughput 1 (light trapped by total internal reflection in a

@@ -11,12 +11,13 @@ namespace {
 
 TEST(PoolSize, AtMostThePixelCount) {
     std::string note;
-    EXPECT_EQ(choose_pool_size(0, default_pool_size("gpu", Integrator::Wavefront), 1u << 20, &note), 1u << 18); // the default
-    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", Integrator::Wavefront), 1u << 20, &note), 1u << 15);
-    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", Integrator::Wavefront), 1000, &note), 1000u);
-    EXPECT_EQ(default_pool_size("cpu", Integrator::Megakernel), 1u << 18);
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("gpu", 132, Integrator::Wavefront), 1u << 22, &note), 132u * 8192);
+    EXPECT_EQ(default_pool_size("gpu", 20, Integrator::Megakernel), 1u << 18); // at least 2^18
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", 2, Integrator::Wavefront), 1u << 20, &note), 1u << 15);
+    EXPECT_EQ(choose_pool_size(0, default_pool_size("cpu", 2, Integrator::Wavefront), 1000, &note), 1000u);
+    EXPECT_EQ(default_pool_size("cpu", 64, Integrator::Megakernel), 1u << 18);
     EXPECT_TRUE(note.empty());
-    EXPECT_EQ(choose_pool_size(5000, default_pool_size("cpu", Integrator::Wavefront), 1200, &note), 1200u);
+    EXPECT_EQ(choose_pool_size(5000, default_pool_size("cpu", 2, Integrator::Wavefront), 1200, &note), 1200u);
     EXPECT_NE(note.find("capped at the pixel count"), std::string::npos);
 }
 
