@@ -264,11 +264,17 @@ def markdown(d):
                              f"{100 * s['agreement']:.3f}% |")
         lines.append("")
     if d.get("registers"):
-        lines += ["## Registers (NVIDIA's compiler, -cl-nv-verbose)", "",
-                  "| program | kernel | registers | stack frame (bytes) | spill stores | shared memory |",
-                  "|---|---|--:|--:|--:|--:|"]
-        lines += [f"| {r['program']} | {r['kernel']} | {r['registers']} | {r.get('stack', '-')} | "
-                  f"{r.get('spill_stores', '-')} | {r['smem']} |" for r in d["registers"]]
+        kernels = {}
+        for r in d["registers"]:
+            kernels.setdefault(r["kernel"], []).append(r)
+        def span(rs, key):
+            lo, hi = min(r.get(key, 0) for r in rs), max(r.get(key, 0) for r in rs)
+            return str(lo) if lo == hi else f"{lo}–{hi}"
+        lines += ["## Registers (NVIDIA's compiler, -cl-nv-verbose), over the programs above", "",
+                  "| kernel | programs | registers | stack frame (bytes) | spill stores | shared memory |",
+                  "|---|--:|--:|--:|--:|--:|"]
+        lines += [f"| {k} | {len(rs)} | {span(rs, 'registers')} | {span(rs, 'stack')} | {span(rs, 'spill_stores')} | "
+                  f"{span(rs, 'smem')} |" for k, rs in kernels.items()]
         lines.append("")
     if d["skipped"]:
         lines += ["## Not done", ""] + [f"- {s}" for s in d["skipped"]] + [""]
