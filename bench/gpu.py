@@ -15,7 +15,8 @@ In order of what matters most, each step skipped once the budget is spent:
   3. throughput: 1024-wide renders for --time seconds after a 1-spp warm-up
      that compiles the program (the first compile of each is timed too):
      the wavefront (its GPU schedule) and the megakernel on six scenes, then
-     the Cornell box under every schedule and pool size;
+     the Cornell box under every schedule, pool size, local size and queue
+     push (--only knobs: the last alone, beside the default);
   4. wavefront_ray_bench --device gpu on three scenes (our kernels on the GPU,
      Embree on every host core, the same rays).
 Only the standard library; the programs are --bin's (default build/, and
@@ -49,6 +50,10 @@ RAY_SCENES = ["scenes/cornell-box.gltf", "real:MetalRoughSpheresNoTextures/Metal
 INTEGRATORS = [("wavefront", []), ("megakernel", ["--integrator", "megakernel"])]
 SCHEDULES = [("passes", ["--schedule", "passes"]),  # the wavefront rows above are refill, a GPU's default
              ("fullest", ["--schedule", "fullest"]), ("refill, sorted", ["--schedule", "refill", "--sort-materials"])]
+KNOBS = [("local size 32", ["--local-size", "32"]), ("local size 128", ["--local-size", "128"]),
+         ("local size 256", ["--local-size", "256"]), ("queue push atomic", ["--queue-push", "atomic"]),
+         ("queue push scan", ["--queue-push", "scan"]), ("group schedule", ["--schedule", "group"]),
+         ("megakernel, local size 128", ["--integrator", "megakernel", "--local-size", "128"])]
 POOLS = [262144, 1048576, 4194304]  # at most the pixels: these rows render 2048 wide
 
 
@@ -303,6 +308,8 @@ def main():
     p.add_argument("--seconds", type=float, default=3, help="each timed render's length (default 3)")
     p.add_argument("--rays", type=int, default=4000000)
     p.add_argument("--device", default="gpu", help="the OpenCL device, as `wavefront render --device` (default gpu)")
+    p.add_argument("--only", choices=["all", "knobs"], default="all",
+                   help="knobs: the Cornell box's local sizes, queue pushes and group schedule alone")
     p.add_argument("--references", help="CPU renders of the check scenes, from --make-references")
     p.add_argument("--make-references", metavar="DIR", help="render them on the CPU device into DIR, and stop")
     args = p.parse_args()
@@ -325,6 +332,10 @@ def main():
             sys.exit("gpu.py: the Cornell box does not render on the device (see gpu-run.log)")
         for label, flags in INTEGRATORS:
             speed_row(run, label, name, scene, extra + flags)
+        if args.only == "knobs":
+            for label, flags in KNOBS:
+                speed_row(run, label, name, scene, extra + flags)
+            return
         ray_step(run, RAY_SCENES[0])
         for name, scene, extra in SPEED_SCENES[3:]:
             for label, flags in INTEGRATORS:
@@ -343,6 +354,8 @@ def main():
             for pool in POOLS:
                 speed_row(run, f"{label}, pool {pool}, 2048 wide", name, scene,
                           extra + flags + ["--pool-size", str(pool)], width=2048)
+        for label, flags in KNOBS:
+            speed_row(run, label, name, scene, extra + flags)
     finally:
         log = os.environ.get("WF_KERNEL_BUILD_LOG")
         if log and os.path.exists(log):
