@@ -17,6 +17,7 @@ In order of what matters most, each step skipped once the budget is spent:
      the wavefront (its GPU schedule) and the megakernel on six scenes, then
      the Cornell box under every schedule, pool size, local size and queue
      push (--only knobs: the last alone, beside the default);
+     (--only traversal: the ray bench with a GPU's kernels and with a CPU's);
   4. wavefront_ray_bench --device gpu on three scenes (our kernels on the GPU,
      Embree on every host core, the same rays).
 Only the standard library; the programs are --bin's (default build/, and
@@ -189,14 +190,14 @@ def speed_row(run, label, name, scene, flags, width=1024):
     run.save()
 
 
-def ray_step(run, scene):
+def ray_step(run, scene, kernels="auto"):
     out = os.path.join(run.tmp, "rays.json")
-    done = run.call(f"rays {scene}", [run.program("wavefront_ray_bench"), run.scene(scene), "--device", run.args.device,
-                                      "--rays", str(run.args.rays), "--threads", str(os.cpu_count()),
-                                      "--json", out], limit=240)
+    done = run.call(f"rays {scene} ({kernels} kernels)",
+                    [run.program("wavefront_ray_bench"), run.scene(scene), "--device", run.args.device, "--kernels",
+                     kernels, "--rays", str(run.args.rays), "--threads", str(os.cpu_count()), "--json", out], limit=240)
     if done is not None:
         with open(out) as f:
-            run.data["rays"].append(json.load(f))
+            run.data["rays"].append(dict(json.load(f), kernels=kernels))
         run.save()
 
 
@@ -258,12 +259,13 @@ def markdown(d):
         lines.append("")
     if d["rays"]:
         lines += ["## Rays (wavefront_ray_bench --device gpu)", "",
-                  "| scene | triangles | set | rays | ours M rays/s | Embree 1 M rays/s | Embree 8 | ours/Embree "
-                  "| agreement |", "|---|--:|---|--:|--:|--:|--:|--:|--:|"]
+                  "| scene | triangles | kernels | set | rays | ours M rays/s | Embree 1 M rays/s | Embree 8 "
+                  "| ours/Embree | agreement |", "|---|--:|---|---|--:|--:|--:|--:|--:|--:|"]
         for r in d["rays"]:
             for s in r["sets"]:
                 p = s.get("embree_packet8_mrays_per_s")
-                lines.append(f"| {os.path.basename(r['scene'])} | {r['triangles']} | {s['set']} | {s['rays']} | "
+                lines.append(f"| {os.path.basename(r['scene'])} | {r['triangles']} | {r.get('kernels', 'auto')} | "
+                             f"{s['set']} | {s['rays']} | "
                              f"{s['ours_mrays_per_s']:.0f} | {s['embree_mrays_per_s']:.0f} | "
                              f"{'-' if p is None else f'{p:.0f}'} | {s['ours_over_embree']:.2f} | "
                              f"{100 * s['agreement']:.3f}% |")
@@ -308,8 +310,9 @@ def main():
     p.add_argument("--seconds", type=float, default=3, help="each timed render's length (default 3)")
     p.add_argument("--rays", type=int, default=4000000)
     p.add_argument("--device", default="gpu", help="the OpenCL device, as `wavefront render --device` (default gpu)")
-    p.add_argument("--only", choices=["all", "knobs"], default="all",
-                   help="knobs: the Cornell box's local sizes, queue pushes and group schedule alone")
+    p.add_argument("--only", choices=["all", "knobs", "traversal"], default="all",
+                   help="knobs: the Cornell box's local sizes, queue pushes and group schedule alone; traversal: "
+                        "the ray bench with a GPU's kernels and a CPU's")
     p.add_argument("--references", help="CPU renders of the check scenes, from --make-references")
     p.add_argument("--make-references", metavar="DIR", help="render them on the CPU device into DIR, and stop")
     args = p.parse_args()
@@ -335,6 +338,11 @@ def main():
         if args.only == "knobs":
             for label, flags in KNOBS:
                 speed_row(run, label, name, scene, extra + flags)
+            return
+        if args.only == "traversal":  # a GPU's traversal against a CPU's, on the same device
+            for scene in RAY_SCENES:
+                for kernels in ("gpu", "cpu"):
+                    ray_step(run, scene, kernels)
             return
         ray_step(run, RAY_SCENES[0])
         for name, scene, extra in SPEED_SCENES[3:]:

@@ -3,10 +3,10 @@
 // the CPU, over the very same rays in the same run (the throughput study's
 // measurement: ours against Embree's single-ray API, same rays, same threads).
 //
-//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--json OUT.json]
+//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--kernels K] [--json OUT.json]
 //
-// --device takes what `wavefront render --device` does (default cpu: ours and
-// Embree on the same cores).
+// --device and --kernels take what `wavefront render` does (default cpu and
+// auto: ours and Embree on the same cores).
 // Three sets of about N rays each: the camera rays of one sample per pixel
 // (coherent), diffuse bounces from points spread over the surfaces by area
 // (incoherent), and shadow segments between two such points (any hit). Our
@@ -56,6 +56,7 @@ struct Options {
     uint32_t rays = 1u << 20;
     unsigned threads = 2;
     std::string device = "cpu";
+    KernelKind kernels = KernelKind::Auto;
     std::string json;
 };
 
@@ -68,7 +69,8 @@ uint32_t positive(const std::string& flag, const std::string& value) {
 }
 
 Options parse(int argc, const char** argv) {
-    const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--json OUT.json]";
+    const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] "
+                              "[--kernels K] [--json OUT.json]";
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -76,6 +78,11 @@ Options parse(int argc, const char** argv) {
         if (a == "--rays" && has_value) o.rays = positive(a, argv[++i]);
         else if (a == "--threads" && has_value) o.threads = positive(a, argv[++i]);
         else if (a == "--device" && has_value) o.device = argv[++i];
+        else if (a == "--kernels" && has_value) {
+            const std::optional<uint32_t> kind = choice_value(kKernelKindNames, argv[++i]);
+            if (!kind) throw InputError(std::string("--kernels ") + argv[i] + ": expected cpu, gpu or auto");
+            o.kernels = static_cast<KernelKind>(*kind);
+        }
         else if (a == "--json" && has_value) o.json = argv[++i];
         else if (a.rfind("--", 0) != 0 && o.scene.empty()) o.scene = a;
         else throw InputError("unexpected argument '" + a + "'; " + usage);
@@ -234,7 +241,9 @@ int run(const Options& options) {
     const Bvh& bvh = build.bvh;
     const DeviceScene uploaded = upload_scene(device.context, build.data);
     Report report;
-    const KernelProgram program = build_render_program(device, scene, RenderSettings{}, &report.features);
+    RenderSettings settings;
+    settings.kernels = options.kernels;
+    const KernelProgram program = build_render_program(device, scene, settings, &report.features);
     const EmbreeScene embree(scene.positions, options.threads);
     report.scene = options.scene;
     report.triangles = scene.triangle_count();

@@ -75,6 +75,12 @@
  * WF_BVH_STACK_SIZE children; the builder gives every subtree no more than
  * the room left to it (host/bvh/bvh_builder.cpp says how).
  *
+ * A GPU's program (WF_GPU_TRAVERSAL) visits in the same order but keeps only
+ * the children's words on the stack, which lives in the thread's local
+ * memory there, and finds the nearest child in vector registers, where an
+ * array indexed by slot would go to local memory too. It drops no popped child
+ * by its entry: culling is only ever a saving, so the hits are the same.
+ *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
  * triangle were not there. The host's queries, for the tests, have none. */
@@ -258,6 +264,18 @@ WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL co
 
 WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u - bits)); }
 
+#if WF_GPU_TRAVERSAL
+/* The slot of `met` with the least entry, the lowest of equal ones, as the
+ * CPU's loop over the slots chooses it. */
+WF_FORCE_INLINE uint32_t nearest_slot(float8 entry, uint32_t met) {
+    const int8 in = -(((int8)((int)met) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1);
+    const float8 masked = select((float8)(INFINITY), entry, in);
+    const float4 m4 = min(masked.lo, masked.hi);
+    const float2 m2 = min(m4.lo, m4.hi);
+    return lowest_bit(lane_bits8(isequal(masked, (float8)(min(m2.x, m2.y)))) & met);
+}
+#endif
+
 /* The selected hit in (0, t_max), or the first one found when
  * stop_at_first_hit is set. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
@@ -268,7 +286,9 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     HitSelection selection = no_hits(t_max);
 
     uint32_t stack_child[WF_BVH_STACK_SIZE];
+#if !WF_GPU_TRAVERSAL
     float stack_entry[WF_BVH_STACK_SIZE];
+#endif
     int stack_size = 0;
     /* Node 0's one child, the top of the tree: its own boxes test the ray
      * against the scene's. */
@@ -297,6 +317,11 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
             float entry[WF_BVH_WIDTH];
             uint32_t met = child_entries(&box, node, selection.window_end, entry);
             if (met != 0u) { /* on to the nearest (see above), the others pushed */
+#if WF_GPU_TRAVERSAL
+                const uint32_t next = stop_at_first_hit ? 31u - clz(met) : nearest_slot(vload8(0, entry), met);
+                for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u)
+                    stack_child[stack_size++] = node->child[lowest_bit(m)];
+#else
                 uint32_t next = stop_at_first_hit ? 31u - clz(met) : lowest_bit(met);
                 if (!stop_at_first_hit)
                     for (uint32_t m = met & (met - 1u); m != 0u; m &= m - 1u) {
@@ -310,6 +335,7 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
                     prefetch_child(nodes, triangles, stack_child[stack_size]);
                     ++stack_size;
                 }
+#endif
                 child = node->child[next];
                 continue;
             }
@@ -317,11 +343,16 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
         /* The next pending child, unless the window's end has moved below
          * where it enters its box since it was pushed: its box test would now
          * fail, since the limit scales as the test's own exit does. */
+#if WF_GPU_TRAVERSAL
+        if (stack_size == 0) return selected_hit(&selection);
+        child = stack_child[--stack_size];
+#else
         do {
             if (stack_size == 0) return selected_hit(&selection);
             --stack_size;
         } while (stack_entry[stack_size] > selection.window_end * (1.0f + 0x1p-21f));
         child = stack_child[stack_size];
+#endif
     }
 }
 
