@@ -10,12 +10,20 @@ Programs: the wavefront (the GPU's default schedule), the wavefront's group
 schedule, and the megakernel, each for the feature set of every scene given
 (default: the repository's scenes and every feature at once).
 
-Usage: python3 bench/gpu_isa.py [--target gfx90a|gfx1030] [--json FILE]
+--target nvptx compiles each program to NVIDIA's PTX instead (clang's
+nvptx64-nvidia-nvcl, left unlinked: the driver supplies OpenCL's built-ins)
+and gives its program-scope __constant data, which must fit NVIDIA's 64 KiB
+constant bank: 117 KiB of albedo tables once kept every program off an H200
+(bench/results/gpu-run.md). Registers there come from the driver itself
+(bench/gpu.sh with WF_KERNEL_OPTIONS=-cl-nv-verbose).
+
+Usage: python3 bench/gpu_isa.py [--target gfx90a|gfx1030|nvptx] [--json FILE]
                                 [--markdown FILE] [--check] [--tool PATH] [SCENE ...]
---check: exit 1 unless every program compiles (the CI test); prints nothing
-else. Needs clang-15 and rocm-device-libs (apt-get install clang-15
-rocm-device-libs). gfx90a is CDNA2 (MI200), gfx1030 RDNA2; Debian 12's
-rocm-device-libs (5.2) has no RDNA3 (gfx1100) libraries.
+--check: exit 1 unless every program compiles (and, for nvptx, fits the
+constant bank) (the CI test); prints nothing else. Needs clang-15 and
+rocm-device-libs (apt-get install clang-15 rocm-device-libs). gfx90a is CDNA2
+(MI200), gfx1030 RDNA2; Debian 12's rocm-device-libs (5.2) has no RDNA3
+(gfx1100) libraries.
 """
 
 import argparse
@@ -33,6 +41,7 @@ BITCODE = "/usr/lib/x86_64-linux-gnu/amdgcn/bitcode"
 PROGRAMS = [("wavefront", ["--integrator", "wavefront"]),
             ("wavefront group", ["--integrator", "wavefront", "--schedule", "group"]),
             ("megakernel", ["--integrator", "megakernel"])]
+NVIDIA_CONSTANT_BANK = 64 * 1024
 FIELDS = {"SGPRs": "sgprs", "VGPRs": "vgprs", "ScratchSize [bytes/lane]": "scratch",
           "LDS Size [bytes/block]": "lds", "Occupancy [waves/SIMD]": "waves"}
 
@@ -68,6 +77,23 @@ def compile_for(target, source, options):
     return kernels
 
 
+def constant_bytes_for_nvptx(source, options):
+    """The program's module-scope .const data in NVIDIA's PTX, in bytes, or
+    raises CalledProcessError with the compiler's errors."""
+    command = ["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "nvptx64-nvidia-nvcl", "-Xclang",
+               "-finclude-default-header", "-O3", "-S", source, "-o", source + ".ptx"] + options.split()
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise subprocess.CalledProcessError(done.returncode, command, done.stdout, done.stderr)
+    total = 0
+    with open(source + ".ptx") as f:
+        for line in f:
+            m = re.match(r"(?:\.visible |\.global )?\.const (?:\.align \d+ )?\.[bufs](\d+) \w+(?:\[(\d+)\])?", line)
+            if m:
+                total += int(m.group(1)) // 8 * int(m.group(2) or 1)
+    return total
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("scenes", nargs="*")
@@ -92,6 +118,13 @@ def main():
                 with open(source) as f:
                     names = set(re.findall(r"__kernel\s+void\s+(\w+)", f.read()))
                 try:
+                    if args.target == "nvptx":
+                        const = constant_bytes_for_nvptx(source, options)
+                        rows.append({"scene": name, "program": program, "target": "nvptx", "constant_bytes": const})
+                        if const > NVIDIA_CONSTANT_BANK:
+                            failures.append(f"{name}, {program}: {const} bytes of __constant data, more than "
+                                            f"NVIDIA's {NVIDIA_CONSTANT_BANK}-byte constant bank")
+                        continue
                     kernels = [k for k in compile_for(args.target, source, options) if k["kernel"] in names]
                 except subprocess.CalledProcessError as e:
                     errors = [line for line in e.stderr.splitlines() if "error" in line][:3]
@@ -101,9 +134,23 @@ def main():
                     rows.append({"scene": name, "program": program, "target": args.target, **k})
     if failures:
         for f in failures:
-            print(f"gpu_isa.py: does not compile for {args.target}: {f}", file=sys.stderr)
+            print(f"gpu_isa.py: fails on {args.target}: {f}", file=sys.stderr)
         sys.exit(1)
     if args.check:
+        return
+    if args.target == "nvptx":
+        lines = ["`python3 bench/gpu_isa.py --target nvptx`: each program's __constant data in NVIDIA's PTX "
+                 f"(the constant bank holds {NVIDIA_CONSTANT_BANK} bytes).", "",
+                 "| scene | program | __constant bytes |", "|---|---|--:|"]
+        lines += [f"| {r['scene']} | {r['program']} | {r['constant_bytes']} |" for r in rows]
+        rows_text = "\n".join(lines) + "\n"
+        print(rows_text)
+        if args.markdown:
+            with open(args.markdown, "w") as f:
+                f.write(rows_text)
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(rows, f, indent=1)
         return
 
     lines = [f"`python3 bench/gpu_isa.py --target {args.target}` (clang-15, rocm-device-libs; the programs "
