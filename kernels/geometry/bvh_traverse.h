@@ -79,7 +79,10 @@
  * the children's words on the stack, which lives in the thread's local
  * memory there, and finds the nearest child in vector registers, where an
  * array indexed by slot would go to local memory too. It drops no popped child
- * by its entry: culling is only ever a saving, so the hits are the same.
+ * by its entry: culling is only ever a saving, so the hits are the same. And
+ * it tests a leaf's triangles one at a time (triangle_intersect.h), each
+ * against the window the ones before it left: a hit beyond the window cannot
+ * change the answer (above), so that too is only a saving.
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -242,6 +245,24 @@ WF_FORCE_INLINE TriangleLanes block_lanes(const WatertightRay* ray, WF_GLOBAL co
     return lanes;
 }
 
+#if WF_GPU_TRAVERSAL
+/* Lane `lane` of a block, permuted for the ray as block_lanes permutes them. */
+WF_FORCE_INLINE TriangleLanes_x1 block_lane(const WatertightRay* ray, WF_GLOBAL const TriangleBlock* block,
+                                            uint32_t lane) {
+    TriangleLanes_x1 one;
+    one.v0.x = block->corners[ray->kx][lane];
+    one.v0.y = block->corners[ray->ky][lane];
+    one.v0.z = block->corners[ray->kz][lane];
+    one.v1.x = block->corners[3 + ray->kx][lane];
+    one.v1.y = block->corners[3 + ray->ky][lane];
+    one.v1.z = block->corners[3 + ray->kz][lane];
+    one.v2.x = block->corners[6 + ray->kx][lane];
+    one.v2.y = block->corners[6 + ray->ky][lane];
+    one.v2.z = block->corners[6 + ray->kz][lane];
+    return one;
+}
+#endif
+
 /* The lanes of block `block` that hold positions [first, end), as bit i for lane i. */
 WF_FORCE_INLINE uint32_t lanes_in_range(uint32_t block, uint32_t first, uint32_t end) {
     const uint32_t base = block * WF_BLOCK_LANES;
@@ -300,6 +321,19 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
             const uint32_t end = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
             for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
                 WF_GLOBAL const TriangleBlock* b = triangles + block;
+#if WF_GPU_TRAVERSAL
+                /* One triangle at a time, each culled by the window the ones before it left. */
+                for (uint32_t left = lanes_in_range(block, first, end); left != 0u; left &= left - 1u) {
+                    const uint32_t lane = lowest_bit(left);
+                    const TriangleLanes_x1 one = block_lane(&ray, b, lane);
+                    TriangleHit hit;
+                    if (!intersect_triangles_x1(&ray, &one, 1u, t_max, selection.window_end, &hit)) continue;
+                    const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
+                    if (!WF_HIT_PASSES(triangles, index, &hit)) continue;
+                    select_hit(&selection, &hit, index, b->light[lane] >= 0);
+                    if (stop_at_first_hit) return selected_hit(&selection);
+                }
+#else
                 const TriangleLanes lanes = block_lanes(&ray, b);
                 TriangleHit hits[WF_BLOCK_LANES];
                 uint32_t found = intersect_triangles(&ray, &lanes, lanes_in_range(block, first, end), t_max,
@@ -311,6 +345,7 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
                     select_hit(&selection, &hits[lane], index, b->light[lane] >= 0);
                     if (stop_at_first_hit) return selected_hit(&selection);
                 }
+#endif
             }
         } else {
             WF_GLOBAL const BvhNode* node = nodes + child;

@@ -25,7 +25,9 @@
  *
  * Four triangles are tested at once, one per float4 lane, as a block of the
  * BVH's triangles holds them; intersect_triangle is lane 0 of the same test, so one
- * triangle alone gets the very bits it gets in a leaf. Every lane goes
+ * triangle alone gets the very bits it gets in a leaf. A GPU's traversal tests
+ * one at a time (geometry/triangle_lanes.inc, where the test is written once
+ * for both widths), with the same bits again. Every lane goes
  * through the scalar operations the formulas below name, in their order. The
  * permutation is applied as the corners are loaded into lanes (x lanes hold
  * each corner's kx component, and so on: a block's row for that axis), so the
@@ -123,158 +125,23 @@ WF_INLINE WatertightRay watertight_ray(float3 origin, float3 direction) {
     return ray;
 }
 
-/* One corner of four triangles, a lane each, permuted for the ray: x holds
- * each corner's kx component, y its ky, z its kz. */
-typedef struct CornerLanes {
-    float4 x, y, z;
-} CornerLanes;
-
-typedef struct TriangleLanes {
-    CornerLanes v0, v1, v2;
-} TriangleLanes;
-
-WF_FORCE_INLINE CornerLanes corner_minus(CornerLanes p, float3 origin) {
-    CornerLanes r;
-    r.x = p.x - origin.x;
-    r.y = p.y - origin.y;
-    r.z = p.z - origin.z;
-    return r;
-}
-
-WF_FORCE_INLINE CornerLanes fabs_lanes(CornerLanes p) {
-    CornerLanes r;
-    r.x = fabs(p.x);
-    r.y = fabs(p.y);
-    r.z = fabs(p.z);
-    return r;
-}
-
-/* Twice the signed area of the 2D triangle (0, p, q); swapping p and q negates
- * it exactly. */
-WF_FORCE_INLINE float4 edge_function(float4 px, float4 py, float4 qx, float4 qy) {
-    WF_FP_CONTRACT_OFF
-    return px * qy - py * qx;
-}
-
 #ifdef WF_EDGE_FUNCTION_DOUBLE_FALLBACK
 WF_INLINE float edge_function_exact_sign(float px, float py, float qx, float qy) {
     /* The products of floats are exact in double: one rounding, right sign. */
     return (float)((double)px * (double)qy - (double)py * (double)qx);
 }
-
-/* The three edge functions of each lane in which one rounded to exactly 0,
- * redone in double. Rare: one lane at a time. */
-WF_INLINE void redo_zero_edge_functions(float4 ax, float4 ay, float4 bx, float4 by, float4 cx, float4 cy,
-                                        float4* e0, float4* e1, float4* e2) {
-    float x[3][4], y[3][4], e[3][4];
-    vstore4(ax, 0, x[0]);
-    vstore4(bx, 0, x[1]);
-    vstore4(cx, 0, x[2]);
-    vstore4(ay, 0, y[0]);
-    vstore4(by, 0, y[1]);
-    vstore4(cy, 0, y[2]);
-    vstore4(*e0, 0, e[0]);
-    vstore4(*e1, 0, e[1]);
-    vstore4(*e2, 0, e[2]);
-    for (int i = 0; i < 4; ++i) {
-        if (e[0][i] != 0.0f && e[1][i] != 0.0f && e[2][i] != 0.0f) continue;
-        e[0][i] = edge_function_exact_sign(x[2][i], y[2][i], x[1][i], y[1][i]);
-        e[1][i] = edge_function_exact_sign(x[0][i], y[0][i], x[2][i], y[2][i]);
-        e[2][i] = edge_function_exact_sign(x[1][i], y[1][i], x[0][i], y[0][i]);
-    }
-    *e0 = vload4(0, e[0]);
-    *e1 = vload4(0, e[1]);
-    *e2 = vload4(0, e[2]);
-}
 #endif
 
-WF_FORCE_INLINE float4 max3(float4 a, float4 b, float4 c) { return max(max(a, b), c); }
-
-/* The bound t_error above in every lane, given the corners relative to the
- * origin (a, b, c), their transformed coordinates, t and 1 / det; INFINITY
- * where det's sign is in doubt. */
-WF_FORCE_INLINE float4 t_error_bound(const WatertightRay* ray, CornerLanes a, CornerLanes b, CornerLanes c,
-                                     float4 ax, float4 bx, float4 cx, float4 ay, float4 by, float4 cy,
-                                     float4 az, float4 bz, float4 cz, float4 t, float4 inv_det) {
-    WF_FP_CONTRACT_OFF /* the same bits as the host, so both select the same hit */
-    const float shear_x = fabs(ray->shear_x), shear_y = fabs(ray->shear_y);
-    const CornerLanes abs_a = fabs_lanes(a), abs_b = fabs_lanes(b), abs_c = fabs_lanes(c);
-    /* dot(|shear row|, |corner|), the row being 1 at kx (or ky), shear at kz, 0 elsewhere. */
-    const float4 dx = rounding_gamma(8) * max3(abs_a.x + shear_x * abs_a.z, abs_b.x + shear_x * abs_b.z,
-                                               abs_c.x + shear_x * abs_c.z);
-    const float4 dy = rounding_gamma(8) * max3(abs_a.y + shear_y * abs_a.z, abs_b.y + shear_y * abs_b.z,
-                                               abs_c.y + shear_y * abs_c.z);
-    const float4 max_x = max3(fabs(ax), fabs(bx), fabs(cx)), max_y = max3(fabs(ay), fabs(by), fabs(cy));
-    const float4 max_z = max3(fabs(az), fabs(bz), fabs(cz));
-    const float4 spread = max3(fabs(az - t), fabs(bz - t), fabs(cz - t));
-    const float4 dz = rounding_gamma(4) * max_z;
-    const float4 de = 2.0f * (rounding_gamma(2) * max_x * max_y + max_x * dy + max_y * dx + dx * dy);
-    const float4 q = 3.0f * de * fabs(inv_det);
-    const float4 denominator = 1.0f - q - rounding_gamma(4);
-    const float4 bound = (rounding_gamma(7) * fabs(t) + rounding_gamma(9) * max_z + q * (spread + dz)) / denominator *
-                         (1.0f + rounding_gamma(12));
-    const float4 zero = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
-    return select(make_float4(INFINITY, INFINITY, INFINITY, INFINITY), bound, isgreater(denominator, zero));
-}
-
-/* Of the lanes set in `lanes`, those whose triangle the ray hits with its
- * exact t surely in (0, t_max), as bit i for lane i, with hits[i] filled for
- * each; of those, only the ones whose t is at most t_cull (traversal has no
- * use for the others, and skips the bound for them). */
-WF_FORCE_INLINE uint32_t intersect_triangles(const WatertightRay* ray, const TriangleLanes* triangles, uint32_t lanes,
-                                             float t_max, float t_cull, TriangleHit* hits) {
-    WF_FP_CONTRACT_OFF
-    const CornerLanes a = corner_minus(triangles->v0, ray->origin);
-    const CornerLanes b = corner_minus(triangles->v1, ray->origin);
-    const CornerLanes c = corner_minus(triangles->v2, ray->origin);
-    const float4 ax = a.x - ray->shear_x * a.z, ay = a.y - ray->shear_y * a.z;
-    const float4 bx = b.x - ray->shear_x * b.z, by = b.y - ray->shear_y * b.z;
-    const float4 cx = c.x - ray->shear_x * c.z, cy = c.y - ray->shear_y * c.z;
-
-    /* e0 is the weight of v0 (the edge v1 v2), e1 of v1, e2 of v2. */
-    float4 e0 = edge_function(cx, cy, bx, by);
-    float4 e1 = edge_function(ax, ay, cx, cy);
-    float4 e2 = edge_function(bx, by, ax, ay);
-    const float4 zero = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
-#ifdef WF_EDGE_FUNCTION_DOUBLE_FALLBACK
-    if ((lane_bits4(isequal(e0, zero) | isequal(e1, zero) | isequal(e2, zero)) & lanes) != 0u)
-        redo_zero_edge_functions(ax, ay, bx, by, cx, cy, &e0, &e1, &e2);
+/* The test at four triangles a time (CornerLanes, TriangleLanes,
+ * intersect_triangles), and in a GPU's traversal at one (..._x1). */
+#define WF_TW 4
+#include "geometry/triangle_lanes.inc"
+#undef WF_TW
+#if WF_GPU_TRAVERSAL
+#define WF_TW 1
+#include "geometry/triangle_lanes.inc"
+#undef WF_TW
 #endif
-    /* Mixed signs: a miss. */
-    const int4 any_negative = isless(e0, zero) | isless(e1, zero) | isless(e2, zero);
-    const int4 any_positive = isgreater(e0, zero) | isgreater(e1, zero) | isgreater(e2, zero);
-    const float4 det = e0 + e1 + e2;
-    int4 valid = ~(any_negative & any_positive) & ~isequal(det, zero);
-    if ((lane_bits4(valid) & lanes) == 0u) return 0u;
-
-    const float4 az = ray->scale_z * a.z, bz = ray->scale_z * b.z, cz = ray->scale_z * c.z;
-    const float4 scaled_t = e0 * az + e1 * bz + e2 * cz;
-    const float4 inv_det = 1.0f / det;
-    const float4 t = scaled_t * inv_det;
-    const float4 limit = make_float4(t_max, t_max, t_max, t_max);
-    const float4 cull = make_float4(t_cull, t_cull, t_cull, t_cull);
-    /* The bound below only narrows (0, t_max). */
-    valid = valid & isgreater(t, zero) & isless(t, limit) & islessequal(t, cull);
-    if ((lane_bits4(valid) & lanes) == 0u) return 0u;
-    /* Rounding can put t above 0 for a plane through or behind the origin, as
-     * for the surface a ray has just left, and below t_max for one at or
-     * beyond the end of a shadow segment. */
-    const float4 t_error = t_error_bound(ray, a, b, c, ax, bx, cx, ay, by, cy, az, bz, cz, t, inv_det);
-    const uint32_t bits = lane_bits4(valid & isgreater(t, t_error) & isless(t + t_error, limit)) & lanes;
-    if (bits == 0u) return 0u;
-    float lane_t[4], lane_error[4], lane_u[4], lane_v[4];
-    vstore4(t, 0, lane_t);
-    vstore4(t_error, 0, lane_error);
-    vstore4(e1 * inv_det, 0, lane_u);
-    vstore4(e2 * inv_det, 0, lane_v);
-    for (int i = 0; i < 4; ++i) {
-        hits[i].t = lane_t[i];
-        hits[i].t_error = lane_error[i];
-        hits[i].u = lane_u[i];
-        hits[i].v = lane_v[i];
-    }
-    return bits;
-}
 
 /* Corner p, permuted for the ray, in every lane. */
 WF_INLINE CornerLanes corner_in_every_lane(const WatertightRay* ray, float3 p) {
