@@ -143,15 +143,7 @@ def main():
                  f"(the constant bank holds {NVIDIA_CONSTANT_BANK} bytes).", "",
                  "| scene | program | __constant bytes |", "|---|---|--:|"]
         lines += [f"| {r['scene']} | {r['program']} | {r['constant_bytes']} |" for r in rows]
-        rows_text = "\n".join(lines) + "\n"
-        print(rows_text)
-        if args.markdown:
-            with open(args.markdown, "w") as f:
-                f.write(rows_text)
-        if args.json:
-            with open(args.json, "w") as f:
-                json.dump(rows, f, indent=1)
-        return
+        return write_outputs(lines, rows, args)
 
     lines = [f"`python3 bench/gpu_isa.py --target {args.target}` (clang-15, rocm-device-libs; the programs "
              "the host builds for a GPU device, expanded by `wavefront_kernel_source`).", "",
@@ -166,6 +158,11 @@ def main():
             continue  # the group program's copy of a kernel the plain one shows alike
         lines.append(f"| {r['scene']} | {r['program']} | {r['kernel']} | {r.get('vgprs', '')} | {r.get('sgprs', '')} "
                      f"| {r.get('scratch', '')} | {r.get('lds', '')} | {r.get('waves', '')} |")
+    write_outputs(lines, rows, args)
+
+
+def write_outputs(lines, rows, args):
+    """The table to stdout and --markdown, the rows to --json."""
     text = "\n".join(lines) + "\n"
     print(text)
     if args.markdown:
