@@ -225,6 +225,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     Renderer renderer(chosen, scene, scene.camera ? *scene.camera : frame_bounds(scene.bounds()), size, settings);
     if (terminal && !options.quiet) log << "\r\33[K" << std::flush;
     if (!renderer.summary().pool_note.empty()) log << "note: " << renderer.summary().pool_note << "\n";
+    if (!renderer.summary().build_warning.empty()) log << "warning: " << renderer.summary().build_warning << "\n";
     if (hooks.add_workers) hooks.add_workers(renderer, size);
     ProgressOptions progress = options.progress;
     progress.reference = reference ? &*reference : nullptr;

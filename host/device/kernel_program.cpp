@@ -27,6 +27,10 @@ std::string first_error_line(const std::string& log) {
     return first_nonempty;
 }
 
+// A compiler's diagnostic says "error:"; PoCL's failed cache write says only
+// that the device failed to build the program.
+bool names_a_source_error(const std::string& log) { return log.find("error") != std::string::npos; }
+
 std::string build_options(const std::string& options) {
     const char* extra = std::getenv("WF_KERNEL_OPTIONS");
     return "-cl-std=CL1.2 " + options + (extra && *extra ? std::string(" ") + extra : std::string());
@@ -42,6 +46,17 @@ void append_build_log(const OpenClDevice& device, const std::string& source_path
 }
 
 } // namespace
+
+std::string build_retrying_once(const std::function<std::string()>& attempt, const std::string& what,
+                                std::string* warning) {
+    const std::string first = attempt();
+    if (first.empty() || names_a_source_error(first)) return first;
+    const std::string second = attempt();
+    if (second.empty())
+        *warning = what + ": the first build failed without naming an error (\"" + first_error_line(first) +
+                   "\"; processes sharing PoCL's cache folder can cause it) and the second worked";
+    return second;
+}
 
 KernelProgram build_kernel_program(const OpenClDevice& device, const std::string& source_path,
                                    const std::string& options, const ProgramCache* cache) {
@@ -64,16 +79,23 @@ KernelProgram build_kernel_program(const OpenClDevice& device, const std::string
             }
         }
     }
-    result.program = cl::Program(device.context, source);
-    try {
-        result.program.build({device.info.device}, all_options.c_str());
-    } catch (const cl::Error&) {
-        append_build_log(device, source_path, all_options, result.program);
-        const std::string log = result.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device);
+    const std::string log = build_retrying_once(
+        [&]() -> std::string {
+            result.program = cl::Program(device.context, source);
+            try {
+                result.program.build({device.info.device}, all_options.c_str());
+            } catch (const cl::Error&) {
+                append_build_log(device, source_path, all_options, result.program);
+                const std::string failed = result.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device);
+                return failed.empty() ? std::string("the build failed, with an empty log") : failed;
+            }
+            append_build_log(device, source_path, all_options, result.program);
+            return std::string();
+        },
+        "kernel " + source_path + " on " + device.info.name, &result.warning);
+    if (!log.empty())
         throw DeviceError("kernel " + source_path + " failed to build on " + device.info.name + ": " +
                           first_error_line(log));
-    }
-    append_build_log(device, source_path, all_options, result.program);
     if (cache) {
         const auto binaries = result.program.getInfo<CL_PROGRAM_BINARIES>();
         if (!binaries.empty() && !binaries.front().empty()) cache->store(key, binaries.front());

@@ -14,7 +14,7 @@
 
 namespace wf {
 
-void check_shared_layouts(const OpenClDevice& device) {
+std::string check_shared_layouts(const OpenClDevice& device) {
     std::vector<uint32_t> host;
     std::vector<std::string> names;
 #define WF_HOST_SIZE(S)                                                                         \
@@ -40,6 +40,7 @@ void check_shared_layouts(const OpenClDevice& device) {
             throw DeviceError("shared struct layout differs on " + device.info.name + ": " + names[i] +
                               " is " + std::to_string(host[i]) + " on the host, " +
                               std::to_string(on_device[i]) + " on the device");
+    return probe.warning;
 }
 
 } // namespace wf

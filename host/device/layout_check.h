@@ -2,12 +2,15 @@
 // layout of every shared struct (include/wavefront/layout_fields.h).
 #pragma once
 
+#include <string>
+
 #include "device/opencl_device.h"
 
 namespace wf {
 
 // Throws DeviceError naming the first struct or member whose size or offset
-// differs between this compiler and the device's.
-void check_shared_layouts(const OpenClDevice& device);
+// differs between this compiler and the device's. Returns the probe's build
+// warning (KernelProgram::warning), if it has one.
+std::string check_shared_layouts(const OpenClDevice& device);
 
 } // namespace wf

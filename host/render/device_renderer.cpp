@@ -124,8 +124,9 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
                                   pixels * sizeof(cl_float4),
                                   size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
 
-    check_shared_layouts(device);
+    const std::string probe_warning = check_shared_layouts(device);
     program_ = build_render_program(device, scene, settings, &summary_.features);
+    summary_.build_warning = probe_warning.empty() ? program_.warning : probe_warning;
     summary_.kernels_from_cache = program_.from_cache;
     device_scene_ = upload_scene(device.context, data);
     const Camera device_camera = make_device_camera(camera, size);

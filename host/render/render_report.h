@@ -48,6 +48,7 @@ struct RenderSummary {
     std::string output;
     int interrupted_by = 0; // the signal that stopped the render early, or 0
     std::string pool_note;  // why the pool is not what was asked for (or the default), when it is not
+    std::string build_warning; // a kernel build that failed once and was retried (kernel_program.h), when one was
     std::vector<DeviceShare> shares; // each device's part, when several took part
     int ranks = 1;                   // MPI ranks the devices were on
 };

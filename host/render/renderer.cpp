@@ -161,6 +161,7 @@ RenderSummary Renderer::summary() const {
         s.device_bytes += part.device_bytes;
         s.times.kernel_build += part.times.kernel_build;
         s.kernels_from_cache = s.kernels_from_cache && part.kernels_from_cache;
+        if (s.build_warning.empty()) s.build_warning = part.build_warning;
     }
     for (size_t w = 0; w < workers_.size(); ++w) s.shares[w].samples = workers_[w]->counts().samples;
     return s;
