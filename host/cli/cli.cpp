@@ -9,6 +9,7 @@
 #include <cctype>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -148,7 +149,7 @@ void add_cache_dir(CLI::App& command, std::string& directory) {
 
 // The render command's flags, each filling its field of `o`.
 struct RenderFlags {
-    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, kernels, config;
+    std::string light_sampling, hemisphere, sampler, integrator, schedule, queue_push, kernels, config, look_at;
     std::vector<std::string> aovs;
     CLI::Option *schedule_flag = nullptr, *spp_flag = nullptr;
 };
@@ -199,10 +200,20 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                                        "GPU " + std::to_string(kGpuPathsPerComputeUnit) + " a compute unit, at least " +
                                        std::to_string(kDefaultPoolSize)))
         ->check(whole_number(1, 1u << 26));
-    render.add_option("--camera", o.camera,
-                      with_default("Index of the glTF camera to use",
-                                   "the first perspective camera, else one framing the scene"))
-        ->check(whole_number(0, 1u << 20));
+    CLI::Option* camera = render.add_option("--camera", o.camera,
+                                            with_default("Index of the glTF camera to use",
+                                                         "the first perspective camera, else one framing the scene"))
+                              ->check(whole_number(0, 1u << 20));
+    render.add_option("--look-at", f.look_at,
+                      with_default("A camera at EYE looking at TARGET, instead of the file's: EX,EY,EZ,TX,TY,TZ, "
+                                   "and UX,UY,UZ for its up (else +y)", "none"))
+        ->type_name("EYE,TARGET[,UP]")
+        ->excludes(camera);
+    render.add_option("--fov", o.fov,
+                      with_default("The camera's vertical field of view, degrees", "the camera's own; 39.6 for "
+                                   "one of --look-at or framing the scene"))
+        ->check(CLI::Range(0.001f, 179.0f))
+        ->type_name("DEGREES");
     f.integrator = integrator_name(s.integrator);
     render.add_option("--integrator", f.integrator,
                       with_default("wavefront (a kernel per stage, over queues) or megakernel (a kernel per path); "
@@ -331,9 +342,29 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->type_name("FILE");
 }
 
+// --look-at's six or nine finite numbers: eye, target and up (+y when left out).
+std::array<float, 9> look_at_numbers(const std::string& text) {
+    std::array<float, 9> v{0, 0, 0, 0, 0, 0, 0, 1, 0};
+    std::istringstream in(text);
+    std::string word;
+    size_t n = 0;
+    for (; std::getline(in, word, ','); ++n) {
+        char* end = nullptr;
+        const float x = n < 9 ? std::strtof(word.c_str(), &end) : 0.0f;
+        if (n >= 9 || word.empty() || *end != '\0' || !std::isfinite(x))
+            throw InputError("render: --look-at " + text + ": expected six or nine finite numbers, comma-separated "
+                             "(EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ])");
+        v[n] = x;
+    }
+    if (n != 6 && n != 9)
+        throw InputError("render: --look-at " + text + ": expected six or nine numbers, not " + std::to_string(n));
+    return v;
+}
+
 // After parsing: the choices into settings, and the checks between flags.
 void settle_render(RenderOptions& o, const RenderFlags& f) {
     RenderSettings& s = o.settings;
+    if (!f.look_at.empty()) o.look_at = look_at_numbers(f.look_at);
     s.integrator = static_cast<Integrator>(index_of(kIntegratorNames, f.integrator));
     s.schedule = static_cast<Schedule>(index_of(kScheduleNames, f.schedule));
     s.queue_push = static_cast<QueuePush>(index_of(kQueuePushNames, f.queue_push));

@@ -4,6 +4,7 @@
 // command, the flag and the value.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,6 +21,8 @@ struct RenderOptions {
     uint32_t width = 0;  // 0: from the camera's aspect
     uint32_t height = 0;
     int camera = -1;     // -1: the file's first perspective camera
+    std::optional<std::array<float, 9>> look_at; // eye, target, up: a camera of the command line's instead
+    std::optional<float> fov;                    // vertical, degrees: the camera's own when not given
     std::string device;  // empty: the first GPU, else the first device
     std::string cache_dir;          // --cache-dir; empty: the default (program_cache.h)
     std::string environment;        // an equirectangular map; empty: none

@@ -75,6 +75,25 @@ private:
     std::ofstream csv_;
 };
 
+std::string look_at_text(const std::array<float, 9>& v) {
+    std::string text;
+    for (float x : v) text += (text.empty() ? "" : ",") + std::to_string(x);
+    return text;
+}
+
+// --look-at's camera in place of the file's, and --fov on whichever camera renders.
+void camera_for_render(Scene& scene, const RenderOptions& o) {
+    if (o.look_at) {
+        const std::array<float, 9>& v = *o.look_at;
+        scene.camera =
+            camera_looking_at({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, kDefaultVerticalFov);
+    }
+    if (o.fov) {
+        if (!scene.camera) scene.camera = frame_bounds(scene.bounds());
+        scene.camera->vertical_fov = glm::radians(*o.fov);
+    }
+}
+
 // What shapes the image, for every output's metadata and for --resume to
 // check: a partial render continues only under the same values. The pool and
 // the devices are not among them: they change no byte (renderer.h).
@@ -83,7 +102,9 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size) {
     return {{"scene", canonical_path(o.scene)},
             {"scene-contents", file_fingerprint(o.scene)},
             {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
-            {"camera", o.camera < 0 ? "first" : std::to_string(o.camera)},
+            {"camera", o.look_at ? "look-at" : o.camera < 0 ? "first" : std::to_string(o.camera)},
+            {"look-at", o.look_at ? look_at_text(*o.look_at) : "none"},
+            {"fov", o.fov ? std::to_string(*o.fov) : "the camera's"},
             {"seed", std::to_string(s.seed)},
             {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
             {"light-sampling", choice_name(kLightSamplingNames, s.light_sampling)},
@@ -177,6 +198,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     light_for_render(scene, options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
+    camera_for_render(scene, options);
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);

@@ -19,7 +19,7 @@ Kind kind_of(const FlagInfo& f) {
     if (!f.takes_value) return Kind::Flag;
     const std::string base = f.type.substr(0, f.type.find(':'));
     if (base == "UINT" || base == "INT") return Kind::Whole;
-    static const std::set<std::string> reals{"FLOAT", "EV", "L", "SECONDS", "X"};
+    static const std::set<std::string> reals{"FLOAT", "EV", "L", "SECONDS", "X", "DEGREES"};
     if (reals.count(base)) return Kind::Real;
     static const std::set<std::string> paths{"OUT", "FILE", "DIR", "REF", "CSV", "PARTIAL"};
     if (paths.count(base)) return Kind::Path;
@@ -91,6 +91,11 @@ std::string value_word(const FlagInfo& f, const std::string& keyword, py::handle
             const auto device = [&](py::handle item) { return device_word(keyword, item); };
             return is_list(v) ? comma_joined(v, device) : device(v);
         }
+        if (f.name == "look-at" && is_list(v)) // look_at=(eye..., target..., [up...])
+            return comma_joined(v, [&](py::handle item) {
+                if (!is_real(item)) wrong_type(keyword, "a list of numbers or a str", item);
+                return py::repr(py::float_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
+            });
         if (f.name == "aov" && is_list(v))
             return comma_joined(v, [&](py::handle item) {
                 if (!py::isinstance<py::str>(item)) wrong_type(keyword, "a str or a list of str", item);

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "base/errors.h"
+
 namespace wf {
 
 ImageSize resolve_image_size(uint32_t width, uint32_t height, const std::optional<SceneCamera>& camera) {
@@ -16,12 +18,26 @@ ImageSize resolve_image_size(uint32_t width, uint32_t height, const std::optiona
 
 SceneCamera frame_bounds(const Bounds& bounds) {
     SceneCamera c;
-    c.vertical_fov = 0.6911f; // 39.6°, a 50 mm lens on 35 mm film
     const float radius = 0.5f * glm::length(bounds.extent());
     const float distance = radius / std::sin(0.5f * c.vertical_fov);
     c.position = bounds.center() + glm::vec3(0.0f, 0.0f, distance);
     c.forward = glm::vec3(0.0f, 0.0f, -1.0f);
     c.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    return c;
+}
+
+SceneCamera camera_looking_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float vertical_fov) {
+    const glm::vec3 view = target - eye;
+    const float length = glm::length(view);
+    if (!(length > 0.0f) || !std::isfinite(length)) throw InputError("render: --look-at: the eye is the target");
+    SceneCamera c;
+    c.position = eye;
+    c.forward = view / length;
+    const glm::vec3 right = glm::cross(c.forward, up);
+    if (!(glm::length(right) > 1e-6f * glm::length(up)))
+        throw InputError("render: --look-at: the up direction lies along the view");
+    c.up = glm::normalize(glm::cross(glm::normalize(right), c.forward));
+    c.vertical_fov = vertical_fov;
     return c;
 }
 

@@ -25,6 +25,10 @@ ImageSize resolve_image_size(uint32_t width, uint32_t height, const std::optiona
 // A camera looking down −z at the bounds, far enough back to see all of them.
 SceneCamera frame_bounds(const Bounds& bounds);
 
+// A camera at `eye` looking at `target`, `up` turned upright for it. Throws
+// InputError when eye and target are one point or up lies along the view.
+SceneCamera camera_looking_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float vertical_fov);
+
 Camera make_device_camera(const SceneCamera& camera, ImageSize size);
 
 } // namespace wf

@@ -55,11 +55,14 @@ struct SceneMaterial {
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
+// 39.6 degrees, a 50 mm lens on 35 mm film: a camera's field of view when nothing says otherwise.
+constexpr float kDefaultVerticalFov = 0.6911f;
+
 struct SceneCamera {
     glm::vec3 position{0.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f}; // unit
     glm::vec3 up{0.0f, 1.0f, 0.0f};       // unit, orthogonal to forward
-    float vertical_fov = 0.6911f;         // radians
+    float vertical_fov = kDefaultVerticalFov; // radians
     float aspect = 0.0f;                  // width / height; 0 when the file leaves it open
 };
 

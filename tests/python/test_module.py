@@ -163,6 +163,23 @@ def test_a_loaded_scene_renders_through_the_camera_it_was_loaded_with(cache):
         wavefront.render(scene, camera=1, cache_dir=cache, **SMALL)
 
 
+def test_a_camera_set_by_eye_target_and_field_of_view(cache):
+    # The Cornell box's own camera, given as eye, target and field of view: the file camera's pixels.
+    file_camera = wavefront.render(CORNELL, cache_dir=cache, **SMALL).image
+    same = wavefront.render(CORNELL, look_at=(278, 273, -800, 278, 273, 0), fov=39.3, cache_dir=cache, **SMALL)
+    assert np.array_equal(same.image, file_camera)
+    closer = wavefront.render(CORNELL, look_at=[278, 273, -500, 278, 273, 0, 0, 1, 0], cache_dir=cache, **SMALL)
+    assert not np.array_equal(closer.image, file_camera)
+    with pytest.raises(TypeError, match="look_at"):
+        wavefront.render(CORNELL, look_at=5, cache_dir=cache, **SMALL)
+    with pytest.raises(TypeError, match="look_at"):
+        wavefront.render(CORNELL, look_at=("a", 1, 2, 3, 4, 5), cache_dir=cache, **SMALL)
+    with pytest.raises(wavefront.InputError, match="--look-at 1.0,2.0,3.0: expected six or nine numbers"):
+        wavefront.render(CORNELL, look_at=(1, 2, 3), cache_dir=cache, **SMALL)
+    with pytest.raises(wavefront.InputError, match="the eye is the target"):
+        wavefront.render(CORNELL, look_at=(1, 2, 3, 1, 2, 3), cache_dir=cache, **SMALL)
+
+
 def test_version_and_what_objects_print(cache):
     binary = os.environ.get("WF_BINARY", os.path.join(ROOT, "build", "wavefront"))
     cli = subprocess.run([binary, "--version"], check=True, capture_output=True, text=True).stdout
