@@ -91,6 +91,19 @@ CLI::Validator probability_above_zero() {
         "in (0, 1]");
 }
 
+// An angle of view in degrees: a number in (0, 180).
+CLI::Validator field_of_view() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            std::istringstream in(text);
+            double value = 0.0;
+            if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
+            if (!(value > 0.0 && value < 180.0)) return text + " is not in (0, 180)";
+            return "";
+        },
+        "in (0, 180)");
+}
+
 // The names of a choice (render_settings.h) as CLI11's list of allowed values.
 std::vector<std::string> names_of(const ChoiceNames& names) {
     std::vector<std::string> list;
@@ -196,8 +209,9 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--pool-size", s.pool_size,
                       with_default("Paths in flight, at most the pixel count",
                                    std::to_string(kDefaultCpuPoolSize) + " for the wavefront on a CPU, where they " +
-                                       "stay in cache, " + std::to_string(kDefaultPoolSize) + " for the megakernel there; on a " +
-                                       "GPU " + std::to_string(kGpuPathsPerComputeUnit) + " a compute unit, at least " +
+                                       "stay in cache, " + std::to_string(kDefaultPoolSize) +
+                                       " for the megakernel there; on a GPU " +
+                                       std::to_string(kGpuPathsPerComputeUnit) + " a compute unit, at least " +
                                        std::to_string(kDefaultPoolSize)))
         ->check(whole_number(1, 1u << 26));
     CLI::Option* camera = render.add_option("--camera", o.camera,
@@ -212,7 +226,7 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--fov", o.fov,
                       with_default("The camera's vertical field of view, degrees", "the camera's own; 39.6 for "
                                    "one of --look-at or framing the scene"))
-        ->check(CLI::Range(0.001f, 179.0f))
+        ->check(field_of_view())
         ->type_name("DEGREES");
     f.integrator = integrator_name(s.integrator);
     render.add_option("--integrator", f.integrator,

@@ -144,12 +144,11 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         d.materials.push_back(dm);
     }
     // A GPU's program reads the glass table from here (bsdf/albedo.h); only glass reads it at all.
-    if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const SceneMaterial& m) {
-            return m.transmission > 0.0f;
-        }))
-    {
-        const auto& table = wf_device::glass_albedo_table;
-        d.glass_albedo.assign(&table[0][0][0][0], &table[0][0][0][0] + sizeof(table) / sizeof(float));
+    const bool glass = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                   [](const SceneMaterial& m) { return m.transmission > 0.0f; });
+    if (glass) {
+        const float* table = &wf_device::glass_albedo_table[0][0][0][0];
+        d.glass_albedo.assign(table, table + sizeof(wf_device::glass_albedo_table) / sizeof(float));
     }
     // A material reads COLOR_0 where any of its corners is not white (add_texture_data uploads them all).
     if (!d.colors.empty())

@@ -27,7 +27,7 @@ std::string first_error_line(const std::string& log) {
     return first_nonempty;
 }
 
-// A compiler's diagnostic says "error:"; PoCL's failed cache write says only
+// A compiler's diagnostic says "error"; PoCL's failed cache write says only
 // that the device failed to build the program.
 bool names_a_source_error(const std::string& log) { return log.find("error") != std::string::npos; }
 

@@ -69,8 +69,8 @@ inline const char* queue_push_name(QueuePush p) { return choice_name(kQueuePushN
 // A GPU hides memory latency with many paths in flight: kGpuPathsPerComputeUnit
 // a compute unit, four times the 2048 threads an NVIDIA multiprocessor holds
 // at once, and at least kDefaultPoolSize. On an H200 (132 units) the
-// wavefront ran the Cornell box 1024 wide at 307 M samples/s with 2^20 paths
-// and 211 with 2^18, the launches' host share 17% against 37%
+// wavefront ran the Cornell box 2048 wide at 189, 284 and 324 M samples/s
+// with 2^18, 2^20 and 2^22 paths, the launches' host share 41%, 20% and 14%
 // (bench/results/gpu-run.md). On a CPU the wavefront runs each stage over the
 // whole pool, so a pool whose state stays in the caches is faster: 2^15 paths
 // are 4 MiB of path state, and on the Cornell box, 512 wide, 64 spp, PoCL on

@@ -97,9 +97,10 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     settings.schedule = schedule_for(device.info, settings);
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
-    settings.pool_size = choose_pool_size(requested.pool_size, default_pool_size(device.info.type, device.info.compute_units,
-                                                                   requested.integrator),
-                                          size.width * size.height, &summary_.pool_note);
+    const uint32_t default_pool =
+        default_pool_size(device.info.type, device.info.compute_units, requested.integrator);
+    settings.pool_size =
+        choose_pool_size(requested.pool_size, default_pool, size.width * size.height, &summary_.pool_note);
     const DeviceSceneData& data = build.data;
     const Bvh& bvh = build.bvh;
     summary_.times.bvh_build = build.seconds;

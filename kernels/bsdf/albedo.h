@@ -133,7 +133,8 @@ WF_INLINE float glass_albedo(GlassAlbedoTable table, float mu, float roughness, 
     float v[2][2];
     for (int i = 0; i < 2; ++i)
         for (int k = 0; k < 2; ++k) {
-            GlassAlbedoTable row = table + ((side * WF_GLASS_IOR_SIZE + x + i) * WF_ALBEDO_SIZE + r + k) * WF_ALBEDO_SIZE;
+            const int at = ((side * WF_GLASS_IOR_SIZE + x + i) * WF_ALBEDO_SIZE + r + k) * WF_ALBEDO_SIZE;
+            GlassAlbedoTable row = table + at;
             const float lo = row[m], hi = row[m + 1];
             v[i][k] = lo + tm * (hi - lo);
         }

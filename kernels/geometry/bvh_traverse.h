@@ -289,8 +289,8 @@ WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u
 /* The slot of `met` with the least entry, the lowest of equal ones, as the
  * CPU's loop over the slots chooses it. */
 WF_FORCE_INLINE uint32_t nearest_slot(float8 entry, uint32_t met) {
-    const int8 in = -(((int8)((int)met) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1);
-    const float8 masked = select((float8)(INFINITY), entry, in);
+    const int8 is_met = -(((int8)((int)met) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1);
+    const float8 masked = select((float8)(INFINITY), entry, is_met);
     const float4 m4 = min(masked.lo, masked.hi);
     const float2 m2 = min(m4.lo, m4.hi);
     return lowest_bit(lane_bits8(isequal(masked, (float8)(min(m2.x, m2.y)))) & met);

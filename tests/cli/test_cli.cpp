@@ -201,7 +201,7 @@ TEST_F(Cli, BadFlagsAreRejectedByName) {
     expect_rejected("render " + kCornell + " --look-at 1,2,3,1,2,3", "--look-at: the eye is the target");
     expect_rejected("render " + kCornell + " --look-at 0,0,0,0,1,0", "--look-at: the up direction lies along");
     expect_rejected("render " + kCornell + " --look-at 0,0,0,0,0,1 --camera 0", "--camera excludes --look-at");
-    expect_rejected("render " + kCornell + " --fov 180", "--fov");
+    expect_rejected("render " + kCornell + " --fov 180", "--fov: 180 is not in (0, 180)");
     expect_rejected("render " + kCornell + " --frobnicate", "frobnicate");
     expect_rejected("render", "no scene file");
     expect_rejected("paint " + kCornell, "unknown command 'paint'");
