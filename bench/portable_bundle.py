@@ -117,15 +117,15 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__.split("\n\n")[1])
     archive, programs = sys.argv[1], sys.argv[2:]
-    kept, stubbed, queue = {}, {}, [("", p) for p in programs]
+    kept, stubbed, queue = {}, {}, list(programs)
     while queue:
-        _, path = queue.pop()
+        path = queue.pop()
         for soname in needed(path):
             if soname in kept or soname in stubbed:
                 continue
             if KEEP.match(soname):
                 kept[soname] = resolve(soname)
-                queue.append((soname, kept[soname]))
+                queue.append(kept[soname])
             else:
                 stubbed[soname] = resolve(soname)
     # Every symbol the kept objects import, by name.
