@@ -78,31 +78,25 @@ CLI::Validator finite_number(Lowest lowest) {
         lowest == Lowest::AboveZero ? "> 0" : lowest == Lowest::Zero ? ">= 0" : "");
 }
 
-// A probability above zero: a number in (0, 1].
-CLI::Validator probability_above_zero() {
+// A number above lo and below hi, or up to it where `hi_included`.
+CLI::Validator number_above(double lo, double hi, bool hi_included) {
+    const std::string range = "(" + as_text(lo) + ", " + as_text(hi) + (hi_included ? "]" : ")");
     return CLI::Validator(
-        [](std::string& text) -> std::string {
+        [=](std::string& text) -> std::string {
             std::istringstream in(text);
             double value = 0.0;
             if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
-            if (!(value > 0.0 && value <= 1.0)) return text + " is not in (0, 1]";
+            if (!(value > lo && (hi_included ? value <= hi : value < hi))) return text + " is not in " + range;
             return "";
         },
-        "in (0, 1]");
+        "in " + range);
 }
 
+// A probability above zero: a number in (0, 1].
+CLI::Validator probability_above_zero() { return number_above(0.0, 1.0, true); }
+
 // An angle of view in degrees: a number in (0, 180).
-CLI::Validator field_of_view() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            std::istringstream in(text);
-            double value = 0.0;
-            if (!(in >> value) || !in.eof() || !std::isfinite(value)) return "'" + text + "' is not a number";
-            if (!(value > 0.0 && value < 180.0)) return text + " is not in (0, 180)";
-            return "";
-        },
-        "in (0, 180)");
-}
+CLI::Validator field_of_view() { return number_above(0.0, 180.0, false); }
 
 // The names of a choice (render_settings.h) as CLI11's list of allowed values.
 std::vector<std::string> names_of(const ChoiceNames& names) {
