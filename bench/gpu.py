@@ -52,6 +52,7 @@ SPEED_SCENES = CHECK_SCENES + [
 ]
 RAY_SCENES = ["scenes/cornell-box.gltf", "real:MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf",
               "real:ToyCar/ToyCar.gltf"]
+CHECK_FLAGS = ["--width", "256", "--spp", "16"]  # the checks' renders and their CPU references alike
 INTEGRATORS = [("wavefront", []), ("megakernel", ["--integrator", "megakernel"])]
 SCHEDULES = [("passes", ["--schedule", "passes"]),  # the wavefront rows above are refill, a GPU's default
              ("fullest", ["--schedule", "fullest"]), ("refill, sorted", ["--schedule", "refill", "--sort-materials"])]
@@ -80,7 +81,7 @@ class Run:
         return self.deadline - time.monotonic()
 
     def scene(self, path):
-        return os.path.join(self.args.real, path[5:]) if path.startswith("real:") else os.path.join(ROOT, path)
+        return scene_path(self.args.real, path)
 
     def program(self, name):
         for d in (self.args.bin, os.path.join(self.args.bin, "bench")):
@@ -131,6 +132,16 @@ class Run:
             f.write(markdown(self.data))
 
 
+def scene_path(real, scene):
+    """A scene of the lists above: "real:X" under --real, else under the repository."""
+    return os.path.join(real, scene[5:]) if scene.startswith("real:") else os.path.join(ROOT, scene)
+
+
+def reference_path(references, scene, seed):
+    """Where --make-references puts the CPU render of `scene` at `seed`."""
+    return os.path.join(references, os.path.basename(scene).split(".")[0] + f"-seed{seed}.exr")
+
+
 def cpu_name():
     try:
         with open("/proc/cpuinfo") as f:
@@ -172,10 +183,9 @@ def register_unlisted_drivers(run):
 
 
 def check_step(run, name, scene, extra):
-    base = ["--width", "256", "--spp", "16", "--seed", "1"] + extra
+    base = CHECK_FLAGS + ["--seed", "1"] + extra
     row = {"scene": name}
-    stem = os.path.basename(scene).split(".")[0]
-    wave = os.path.join(run.tmp, f"{stem}-wavefront.exr")
+    wave = os.path.join(run.tmp, "wavefront.exr")
     s = run.render(f"check {name} wavefront", scene, base, wave)
     if s is None:
         return
@@ -183,11 +193,11 @@ def check_step(run, name, scene, extra):
     row["wavefront_vs_megakernel"] = relmse(run, f"check {name} megakernel", scene,
                                             base + ["--integrator", "megakernel"], "mega.exr", wave)
     refs = run.args.references
-    if refs and os.path.exists(os.path.join(refs, f"{stem}-seed1.exr")):
+    if refs and os.path.exists(reference_path(refs, scene, 1)):
         row["gpu_vs_cpu_same_seed"] = relmse(run, f"check {name} vs cpu", scene, base, "same.exr",
-                                             os.path.join(refs, f"{stem}-seed1.exr"))
+                                             reference_path(refs, scene, 1))
         row["cpu_vs_cpu_other_seed"] = relmse(run, f"check {name} vs cpu seed 2", scene, base, "other.exr",
-                                              os.path.join(refs, f"{stem}-seed2.exr"))
+                                              reference_path(refs, scene, 2))
     run.data["checks"].append(row)
     run.save()
 
@@ -319,12 +329,10 @@ def make_references(args):
     os.makedirs(args.make_references, exist_ok=True)
     wavefront = os.path.join(args.bin, "wavefront")
     for _, scene, extra in CHECK_SCENES:
-        path = os.path.join(args.real, scene[5:]) if scene.startswith("real:") else os.path.join(ROOT, scene)
-        stem = os.path.basename(scene).split(".")[0]
         for seed in (1, 2):
-            subprocess.run([wavefront, "render", path, "--device", "cpu", "--width", "256", "--spp", "16",
-                            "--seed", str(seed), "--quiet", "-o",
-                            os.path.join(args.make_references, f"{stem}-seed{seed}.exr")] + extra, check=True)
+            subprocess.run([wavefront, "render", scene_path(args.real, scene), "--device", "cpu"] + CHECK_FLAGS +
+                           ["--seed", str(seed), "--quiet", "-o", reference_path(args.make_references, scene, seed)]
+                           + extra, check=True)
 
 
 def main():
