@@ -10,6 +10,7 @@
 #include "wavefront/path_state.h"
 #include "wavefront/render_params.h"
 #include "wavefront/stage_graph.h"
+#include "geometry/trace_width.h"
 
 #define WF_PATH_MEMBER(type, name, what) __global type* name;
 typedef struct PathState {
@@ -74,6 +75,20 @@ WF_INLINE bool queue_slot(uint pool_size, __global const uint* queues, volatile 
     const bool active = index < counters[queue];
     *slot = active ? queues[queue * pool_size + index] : 0u;
     return active;
+}
+
+/* The slots a work-item of a ray-tracing stage takes from `queue`, into
+ * slot[], and how many: WF_TRACE_WIDTH consecutive entries of its
+ * work-group's share of the queue, so that the group's first 1 / WF_TRACE_WIDTH
+ * of work-items take them all and the rest none. */
+WF_INLINE uint queue_slots_to_trace(uint pool_size, __global const uint* queues, volatile __global const uint* counters,
+                                    uint queue, uint* slot) {
+    const uint group_size = get_local_size(0), first = WF_TRACE_WIDTH * get_local_id(0);
+    const uint index = get_group_id(0) * group_size + first, length = counters[queue];
+    if (first >= group_size || index >= length) return 0u;
+    const uint count = min(min((uint)WF_TRACE_WIDTH, group_size - first), length - index);
+    for (uint i = 0; i < count; ++i) slot[i] = queues[queue * pool_size + index + i];
+    return count;
 }
 
 #endif

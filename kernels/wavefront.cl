@@ -32,9 +32,9 @@ __kernel void generate(WF_STAGE_PARAMS) {
 
 __kernel void intersect(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
-    uint slot;
-    if (!queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot)) return;
-    intersect_path(&path, slot, &scene);
+    uint slot[WF_TRACE_WIDTH];
+    const uint count = queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_EXTEND, slot);
+    if (count > 0u) intersect_paths(&path, slot, count, &scene);
 }
 
 /* --sort-materials, between intersect and shade (stages/sort_by_material.h). */
@@ -77,12 +77,12 @@ __kernel void shade(WF_STAGE_PARAMS) {
 __kernel void intersect_shadow(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local uint scratch[WF_QUEUE_SCRATCH];
-    uint slot;
-    const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_SHADOW, &slot);
-    const uint next = active ? trace_shadow_ray(&path, &params, slot, &scene, &film) : WF_QUEUE_COUNT;
-    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], active ? 1u : 0u, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next == WF_QUEUE_CONTINUE, scratch);
-    queue_push(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, next == WF_QUEUE_FINISHED, scratch);
+    uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
+    const uint count = queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_SHADOW, slot);
+    if (count > 0u) trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], count, scratch);
+    queue_push_each(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next, count, scratch);
+    queue_push_each(queues, counters, params.pool_size, WF_QUEUE_FINISHED, slot, next, count, scratch);
 }
 
 __kernel void roulette(WF_STAGE_PARAMS) {
@@ -152,7 +152,12 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     barrier(CLK_LOCAL_MEM_FENCE);
     if (lid == 0) entered[WF_QUEUE_REGENERATE] = queue[WF_QUEUE_EXTEND].length;
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
-        if (lid < extending) intersect_path(&path, queue[WF_QUEUE_EXTEND].slots[lid], &scene);
+        if (WF_TRACE_WIDTH * lid < extending) { /* WF_TRACE_WIDTH paths a work-item (geometry/trace_width.h) */
+            uint slot[WF_TRACE_WIDTH];
+            const uint count = min((uint)WF_TRACE_WIDTH, extending - WF_TRACE_WIDTH * lid);
+            for (uint i = 0u; i < count; ++i) slot[i] = queue[WF_QUEUE_EXTEND].slots[WF_TRACE_WIDTH * lid + i];
+            intersect_paths(&path, slot, count, &scene);
+        }
 #ifdef WF_GROUP_LANES
         if (lid == 0) lanes_length = 0u;
 #endif
@@ -199,10 +204,13 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             entered[WF_QUEUE_EXTEND] += extending;
             queue[WF_QUEUE_EXTEND].length = 0u;
         }
-        if (lid < queue[WF_QUEUE_SHADOW].length) {
-            const uint slot = queue[WF_QUEUE_SHADOW].slots[lid];
-            ++shadow_rays;
-            local_push(&queue[trace_shadow_ray(&path, &params, slot, &scene, &film)], slot);
+        if (WF_TRACE_WIDTH * lid < queue[WF_QUEUE_SHADOW].length) {
+            uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
+            const uint count = min((uint)WF_TRACE_WIDTH, queue[WF_QUEUE_SHADOW].length - WF_TRACE_WIDTH * lid);
+            for (uint i = 0u; i < count; ++i) slot[i] = queue[WF_QUEUE_SHADOW].slots[WF_TRACE_WIDTH * lid + i];
+            trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
+            shadow_rays += count;
+            for (uint i = 0u; i < count; ++i) local_push(&queue[next[i]], slot[i]);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid < queue[WF_QUEUE_CONTINUE].length) {

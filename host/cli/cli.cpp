@@ -247,6 +247,11 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                       with_default("Paths a work-item in the group schedule's BSDF lanes: 1, 8 or 16, or 0 for 8 "
                                    "on a CPU of 8-float vectors or wider (1 elsewhere); the same image", s.lane_width))
         ->check(CLI::IsMember({0u, 1u, 8u, 16u}));
+    render.add_option("--trace-width", s.trace_width,
+                      with_default("Rays a work-item traces at once: 1, 2, or 0 for 2 on a CPU where the scene's "
+                                   "triangles outgrow the device's cache (1 elsewhere); the same image",
+                                   s.trace_width))
+        ->check(CLI::IsMember({0u, 1u, 2u}));
     f.kernels = kernel_kind_name(s.kernels);
     render.add_option("--kernels", f.kernels,
                       with_default("Build the kernels for a cpu or a gpu, whatever the device, to test one kind's "

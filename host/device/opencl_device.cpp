@@ -80,6 +80,7 @@ std::vector<DeviceInfo> list_devices() {
             info.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
             info.max_allocation = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
             info.native_float_width = d.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
+            info.global_cache = d.getInfo<CL_DEVICE_GLOBAL_MEM_CACHE_SIZE>();
             info.device = d;
             result.push_back(info);
         }

@@ -21,6 +21,7 @@ struct DeviceInfo {
     unsigned long long global_memory = 0;
     unsigned long long max_allocation = 0;
     unsigned native_float_width = 1; // floats in one of its vector registers (8 for AVX2, 16 for AVX-512)
+    unsigned long long global_cache = 0; // bytes of its global memory cache (a CPU's last level; 0: unknown)
     cl::Device device;
 };
 

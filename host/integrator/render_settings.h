@@ -112,6 +112,10 @@ struct RenderSettings {
     // or 16 paths a work-item; 0: 8 on a device of 8-float vectors or wider,
     // else 1 (render/device_renderer.cpp). The same bytes at every width.
     uint32_t lane_width = 0;
+    // Rays a work-item of the tracing stages traces at once
+    // (kernels/geometry/trace_width.h): 1 or 2; 0: 2 on a CPU where the
+    // scene's triangles outgrow the device's cache, else 1. The same bytes.
+    uint32_t trace_width = 0;
     KernelKind kernels = KernelKind::Auto; // Auto: the device's kind
     // While it holds non-zero, no sample starts: the paths in flight end and
     // the round returns early, each slot's pixels then one sample apart at most.

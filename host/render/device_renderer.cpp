@@ -47,6 +47,23 @@ unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings, bo
     return device.native_float_width >= 8 && !gpu_kernels ? 8u : 1u;
 }
 
+// Kernels for a GPU, or for a CPU: as asked, else the device's kind.
+bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
+    return settings.kernels == KernelKind::Auto ? device.type != "cpu" : settings.kernels == KernelKind::Gpu;
+}
+
+// Rays a work-item traces at once (kernels/geometry/trace_width.h): as asked,
+// else two on a CPU where the scene's triangle blocks alone are more than the
+// device's cache holds. Two paid only there (bench/results/ray-throughput.md,
+// 2026-12-04): MetalRoughSpheresNoTextures' 46 MB of blocks, bounce rays 1.15x;
+// ToyCar's 5 MB, the same speed; the Cornell box's 1 KB, 0.92-0.95x.
+uint32_t trace_width(const DeviceInfo& device, const Scene& scene, const RenderSettings& settings) {
+    if (settings.trace_width != 0) return settings.trace_width;
+    const unsigned long long blocks =
+        (scene.triangle_count() + WF_BLOCK_LANES - 1) / WF_BLOCK_LANES * sizeof(TriangleBlock);
+    return !gpu_kernels(device, settings) && device.global_cache > 0 && blocks > device.global_cache ? 2u : 1u;
+}
+
 } // namespace
 
 RenderProgramSource render_program_source(const DeviceInfo& device, const SceneFeatures& features,
@@ -54,7 +71,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     RenderProgramSource p;
     p.root = settings.integrator == Integrator::Megakernel ? "megakernel.cl" : "wavefront.cl";
     p.options = feature_defines(features);
-    const bool gpu = settings.kernels == KernelKind::Auto ? device.type != "cpu" : settings.kernels == KernelKind::Gpu;
+    const bool gpu = gpu_kernels(device, settings);
     // Device functions a GPU's linker can always find (wavefront/compat.h); PoCL runs faster without.
     // The glass table out of the constant bank, which holds 64 KiB on NVIDIA's GPUs (bsdf/albedo.h), and
     // a traversal whose stack is half the size (geometry/bvh_traverse.h).
@@ -69,17 +86,21 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
+    if (settings.trace_width > 1) p.options += " -DWF_TRACE_WIDTH=" + std::to_string(settings.trace_width);
     return p;
 }
 
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
                                    std::string* features_described) {
     const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    RenderSettings resolved = settings;
+    resolved.trace_width = trace_width(device.info, scene, settings);
     if (features_described)
-        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)");
+        *features_described = describe_features(features) + (settings.specialize ? "" : " (--no-specialize)") +
+                              (resolved.trace_width > 1 ? "; two rays a work-item" : "");
     const std::optional<ProgramCache> cache =
         settings.cache_dir.empty() ? std::nullopt : std::optional<ProgramCache>(ProgramCache(settings.cache_dir));
-    const RenderProgramSource source = render_program_source(device.info, features, settings);
+    const RenderProgramSource source = render_program_source(device.info, features, resolved);
     return build_kernel_program(device, source.root, source.options, cache ? &*cache : nullptr);
 }
 

@@ -68,6 +68,17 @@ WF_INLINE void queue_push(__global uint* queues, volatile __global uint* counter
     if (push) queues[queue * pool_size + at] = slot;
 }
 
+/* Appends each of slot[0 .. count) whose next[i] is `queue`: queue_push for
+ * a work-item with several slots (geometry/trace_width.h). */
+WF_INLINE void queue_push_each(__global uint* queues, volatile __global uint* counters, uint pool_size, uint queue,
+                               const uint* slot, const uint* next, uint count, __local uint* scratch) {
+    uint pushed = 0u;
+    for (uint i = 0; i < count; ++i) pushed += next[i] == queue ? 1u : 0u;
+    uint at = group_atomic_add(&counters[queue], pushed, scratch);
+    for (uint i = 0; i < count; ++i)
+        if (next[i] == queue) queues[queue * pool_size + at++] = slot[i];
+}
+
 /* Adds 1 to counters[bucket] for each work-item with `count` set. `histogram`
  * is `buckets` __local uints declared once at kernel scope; the work-group must
  * have at least `buckets` work-items. */

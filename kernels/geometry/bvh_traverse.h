@@ -94,6 +94,7 @@
 #include "wavefront/scene_types.h"
 #include "geometry/triangle_intersect.h"
 #include "geometry/triangle_blocks.h"
+#include "geometry/trace_width.h"
 
 #ifdef __OPENCL_C_VERSION__
 #include "materials/alpha_mask.h"
@@ -297,98 +298,176 @@ WF_FORCE_INLINE uint32_t nearest_slot(float8 entry, uint32_t met) {
 }
 #endif
 
+/* One ray's traversal between visits, so that it can be resumed: the CPU's
+ * kernels advance two rays in turn (bvh_traverse_pair). The pending children
+ * are apart from the rest, which an array beside it would keep from living in
+ * registers. */
+typedef struct Traversal {
+    WatertightRay ray;
+    BoxRay box;
+    HitSelection selection;
+    float t_max;
+    uint32_t child; /* the next child to visit */
+    int stack_size;
+    int done;
+} Traversal;
+
+typedef struct TraversalStack {
+    uint32_t child[WF_BVH_STACK_SIZE];
+#if !WF_GPU_TRAVERSAL
+    float entry[WF_BVH_STACK_SIZE];
+#endif
+} TraversalStack;
+
+WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* nodes, float3 origin, float3 direction,
+                                     float t_max) {
+    t->ray = watertight_ray(origin, direction);
+    t->box = box_ray(nodes, origin, direction);
+    t->selection = no_hits(t_max);
+    t->t_max = t_max;
+    t->stack_size = 0;
+    t->done = 0;
+    /* Node 0's one child, the top of the tree: its own boxes test the ray
+     * against the scene's. */
+    t->child = nodes->child[0];
+}
+
+/* One leaf or one node visit; sets t->done once the answer is
+ * selected_hit(&t->selection): every child visited, or, when
+ * stop_at_first_hit is set, the first hit found. */
+WF_FORCE_INLINE void traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
+                                    WF_GLOBAL const TriangleBlock* triangles,
+                                    int stop_at_first_hit WF_HIT_FILTER_PARAM) {
+    const uint32_t child = t->child;
+    if (child & WF_BVH_LEAF) {
+        /* One or two blocks, four triangles at a time. */
+        const uint32_t first = child & WF_BVH_FIRST_MASK;
+        const uint32_t end = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
+        for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
+            WF_GLOBAL const TriangleBlock* b = triangles + block;
+#if WF_GPU_TRAVERSAL
+            /* One triangle at a time, each culled by the window the ones before it left. */
+            for (uint32_t left = lanes_in_range(block, first, end); left != 0u; left &= left - 1u) {
+                const uint32_t lane = lowest_bit(left);
+                const TriangleLanes_x1 one = block_lane(&t->ray, b, lane);
+                TriangleHit hit;
+                if (!intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->selection.window_end, &hit)) continue;
+                const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
+                if (!WF_HIT_PASSES(triangles, index, &hit)) continue;
+                select_hit(&t->selection, &hit, index, b->light[lane] >= 0);
+                if (stop_at_first_hit) {
+                    t->done = 1;
+                    return;
+                }
+            }
+#else
+            const TriangleLanes lanes = block_lanes(&t->ray, b);
+            TriangleHit hits[WF_BLOCK_LANES];
+            uint32_t found = intersect_triangles(&t->ray, &lanes, lanes_in_range(block, first, end), t->t_max,
+                                                 t->selection.window_end, hits);
+            for (; found != 0u; found &= found - 1u) {
+                const uint32_t lane = lowest_bit(found);
+                const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
+                if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
+                select_hit(&t->selection, &hits[lane], index, b->light[lane] >= 0);
+                if (stop_at_first_hit) {
+                    t->done = 1;
+                    return;
+                }
+            }
+#endif
+        }
+    } else {
+        WF_GLOBAL const BvhNode* node = nodes + child;
+        float entry[WF_BVH_WIDTH];
+        const uint32_t met = child_entries(&t->box, node, t->selection.window_end, entry);
+        if (met != 0u) { /* on to the nearest (see above), the others pushed */
+#if WF_GPU_TRAVERSAL
+            const uint32_t next = stop_at_first_hit ? 31u - clz(met) : nearest_slot(vload8(0, entry), met);
+            for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u)
+                stack->child[t->stack_size++] = node->child[lowest_bit(m)];
+#else
+            uint32_t next = stop_at_first_hit ? 31u - clz(met) : lowest_bit(met);
+            if (!stop_at_first_hit)
+                for (uint32_t m = met & (met - 1u); m != 0u; m &= m - 1u) {
+                    const uint32_t slot = lowest_bit(m);
+                    if (entry[slot] < entry[next]) next = slot;
+                }
+            for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u) {
+                const uint32_t slot = lowest_bit(m);
+                stack->entry[t->stack_size] = entry[slot];
+                stack->child[t->stack_size] = node->child[slot];
+                prefetch_child(nodes, triangles, stack->child[t->stack_size]);
+                ++t->stack_size;
+            }
+#endif
+            t->child = node->child[next];
+            return;
+        }
+    }
+    /* The next pending child, unless the window's end has moved below where
+     * it enters its box since it was pushed: its box test would now fail,
+     * since the limit scales as the test's own exit does. */
+#if WF_GPU_TRAVERSAL
+    if (t->stack_size == 0) {
+        t->done = 1;
+        return;
+    }
+    t->child = stack->child[--t->stack_size];
+#else
+    do {
+        if (t->stack_size == 0) {
+            t->done = 1;
+            return;
+        }
+        --t->stack_size;
+    } while (stack->entry[t->stack_size] > t->selection.window_end * (1.0f + 0x1p-21f));
+    t->child = stack->child[t->stack_size];
+#endif
+}
+
 /* The selected hit in (0, t_max), or the first one found when
  * stop_at_first_hit is set. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                               float3 origin, float3 direction, float t_max,
                               int stop_at_first_hit WF_HIT_FILTER_PARAM) {
-    const WatertightRay ray = watertight_ray(origin, direction);
-    const BoxRay box = box_ray(nodes, origin, direction);
-    HitSelection selection = no_hits(t_max);
+    Traversal t;
+    TraversalStack stack;
+    traversal_start(&t, nodes, origin, direction, t_max);
+    do traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    while (!t.done);
+    return selected_hit(&t.selection);
+}
 
-    uint32_t stack_child[WF_BVH_STACK_SIZE];
-#if !WF_GPU_TRAVERSAL
-    float stack_entry[WF_BVH_STACK_SIZE];
-#endif
-    int stack_size = 0;
-    /* Node 0's one child, the top of the tree: its own boxes test the ray
-     * against the scene's. */
-    uint32_t child = nodes->child[0];
-    for (;;) {
-        if (child & WF_BVH_LEAF) {
-            /* One or two blocks, four triangles at a time. */
-            const uint32_t first = child & WF_BVH_FIRST_MASK;
-            const uint32_t end = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
-            for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
-                WF_GLOBAL const TriangleBlock* b = triangles + block;
-#if WF_GPU_TRAVERSAL
-                /* One triangle at a time, each culled by the window the ones before it left. */
-                for (uint32_t left = lanes_in_range(block, first, end); left != 0u; left &= left - 1u) {
-                    const uint32_t lane = lowest_bit(left);
-                    const TriangleLanes_x1 one = block_lane(&ray, b, lane);
-                    TriangleHit hit;
-                    if (!intersect_triangles_x1(&ray, &one, 1u, t_max, selection.window_end, &hit)) continue;
-                    const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
-                    if (!WF_HIT_PASSES(triangles, index, &hit)) continue;
-                    select_hit(&selection, &hit, index, b->light[lane] >= 0);
-                    if (stop_at_first_hit) return selected_hit(&selection);
-                }
-#else
-                const TriangleLanes lanes = block_lanes(&ray, b);
-                TriangleHit hits[WF_BLOCK_LANES];
-                uint32_t found = intersect_triangles(&ray, &lanes, lanes_in_range(block, first, end), t_max,
-                                                     selection.window_end, hits);
-                for (; found != 0u; found &= found - 1u) {
-                    const uint32_t lane = lowest_bit(found);
-                    const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
-                    if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
-                    select_hit(&selection, &hits[lane], index, b->light[lane] >= 0);
-                    if (stop_at_first_hit) return selected_hit(&selection);
-                }
-#endif
-            }
-        } else {
-            WF_GLOBAL const BvhNode* node = nodes + child;
-            float entry[WF_BVH_WIDTH];
-            uint32_t met = child_entries(&box, node, selection.window_end, entry);
-            if (met != 0u) { /* on to the nearest (see above), the others pushed */
-#if WF_GPU_TRAVERSAL
-                const uint32_t next = stop_at_first_hit ? 31u - clz(met) : nearest_slot(vload8(0, entry), met);
-                for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u)
-                    stack_child[stack_size++] = node->child[lowest_bit(m)];
-#else
-                uint32_t next = stop_at_first_hit ? 31u - clz(met) : lowest_bit(met);
-                if (!stop_at_first_hit)
-                    for (uint32_t m = met & (met - 1u); m != 0u; m &= m - 1u) {
-                        const uint32_t slot = lowest_bit(m);
-                        if (entry[slot] < entry[next]) next = slot;
-                    }
-                for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u) {
-                    const uint32_t slot = lowest_bit(m);
-                    stack_entry[stack_size] = entry[slot];
-                    stack_child[stack_size] = node->child[slot];
-                    prefetch_child(nodes, triangles, stack_child[stack_size]);
-                    ++stack_size;
-                }
-#endif
-                child = node->child[next];
-                continue;
-            }
-        }
-        /* The next pending child, unless the window's end has moved below
-         * where it enters its box since it was pushed: its box test would now
-         * fail, since the limit scales as the test's own exit does. */
-#if WF_GPU_TRAVERSAL
-        if (stack_size == 0) return selected_hit(&selection);
-        child = stack_child[--stack_size];
-#else
-        do {
-            if (stack_size == 0) return selected_hit(&selection);
-            --stack_size;
-        } while (stack_entry[stack_size] > selection.window_end * (1.0f + 0x1p-21f));
-        child = stack_child[stack_size];
-#endif
+/* Two rays' bvh_traverse, a step of each in turn (geometry/trace_width.h
+ * says why). Each ray's steps are those of its own bvh_traverse, so each
+ * answer is too. */
+WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
+                                 const float3 origin[2], const float3 direction[2], float t_max,
+                                 int stop_at_first_hit WF_HIT_FILTER_PARAM, RayHit hit[2]) {
+    Traversal a, b;
+    TraversalStack stack_a, stack_b;
+    traversal_start(&a, nodes, origin[0], direction[0], t_max);
+    traversal_start(&b, nodes, origin[1], direction[1], t_max);
+    while (!a.done && !b.done) {
+        traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+        traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
     }
+    while (!a.done) traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    while (!b.done) traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    hit[0] = selected_hit(&a.selection);
+    hit[1] = selected_hit(&b.selection);
+}
+
+/* bvh_traverse of `count` rays, 1 to WF_TRACE_WIDTH, into hit[0 .. count). */
+WF_INLINE void bvh_traverse_rays(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
+                                 const float3* origin, const float3* direction, uint32_t count, float t_max,
+                                 int stop_at_first_hit WF_HIT_FILTER_PARAM, RayHit* hit) {
+    if (WF_TRACE_WIDTH > 1 && count == 2u) {
+        bvh_traverse_pair(nodes, triangles, origin, direction, t_max, stop_at_first_hit WF_HIT_FILTER_ARG, hit);
+        return;
+    }
+    hit[0] = bvh_traverse(nodes, triangles, origin[0], direction[0], t_max, stop_at_first_hit WF_HIT_FILTER_ARG);
 }
 
 WF_INLINE RayHit bvh_closest_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,

@@ -1,6 +1,7 @@
-/* intersect_shadow — any hit along the slot's pending shadow segment; an
+/* intersect_shadow — any hit along each slot's pending shadow segment; an
  * unoccluded one delivers its light sample's radiance to the path, which then
- * goes on to roulette or to accumulation, as shade decided. */
+ * goes on to roulette or to accumulation, as shade decided. A work-item
+ * traces WF_TRACE_WIDTH slots at once (geometry/trace_width.h). */
 #ifndef WF_STAGE_INTERSECT_SHADOW_H
 #define WF_STAGE_INTERSECT_SHADOW_H
 
@@ -12,19 +13,35 @@
 #include "geometry/bvh_traverse.h"
 #include "common/bounce_layers.h"
 
-/* Traces the slot's shadow segment and adds its light if nothing blocks it;
- * returns the queue the path goes to next. */
-WF_INLINE uint trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
-                             const FilmBuffers* film) {
-    const float4 light = path->shadow_radiance[slot];
-    const bool occluded = bvh_any_hit(scene->nodes, scene->triangles, path->shadow_origin[slot].xyz,
-                                      path->shadow_segment[slot].xyz, 1.0f, scene);
-    if (!occluded) {
-        path->radiance[slot].xyz += light.xyz;
-        add_to_bounce_layer(params, film, current_sample(path, params, slot).pixel, shadow_light_layer(light),
-                            light.xyz);
+/* Traces the shadow segments of slot[0 .. count), count from 1 to
+ * WF_TRACE_WIDTH, and adds the light of each that nothing blocks; next[i]
+ * is the queue slot[i] goes to next. */
+WF_INLINE void trace_shadow_rays(PathState* path, const RenderParams* params, const uint* slot, uint count,
+                                 const Scene* scene, const FilmBuffers* film, uint* next) {
+    float3 origin[WF_TRACE_WIDTH], segment[WF_TRACE_WIDTH];
+    RayHit hit[WF_TRACE_WIDTH];
+    for (uint i = 0; i < count; ++i) {
+        origin[i] = path->shadow_origin[slot[i]].xyz;
+        segment[i] = path->shadow_segment[slot[i]].xyz;
     }
-    return shadow_then_continues(light) ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
+    bvh_traverse_rays(scene->nodes, scene->triangles, origin, segment, count, 1.0f, 1, scene, hit);
+    for (uint i = 0; i < count; ++i) {
+        const float4 light = path->shadow_radiance[slot[i]];
+        if (hit[i].triangle < 0) { /* unoccluded */
+            path->radiance[slot[i]].xyz += light.xyz;
+            add_to_bounce_layer(params, film, current_sample(path, params, slot[i]).pixel, shadow_light_layer(light),
+                                light.xyz);
+        }
+        next[i] = shadow_then_continues(light) ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
+    }
+}
+
+/* The same for one slot; returns the queue it goes to next. */
+WF_INLINE uint trace_shadow_ray(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                                const FilmBuffers* film) {
+    uint next;
+    trace_shadow_rays(path, params, &slot, 1u, scene, film, &next);
+    return next;
 }
 
 #endif

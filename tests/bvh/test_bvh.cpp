@@ -260,6 +260,25 @@ int expect_agreement(const BvhScene& scene, const std::vector<Ray>& rays) {
         for (float limit : limits)
             if (scene.any(rays[i], limit) != (scene.select(rays[i], candidates, limit).triangle >= 0))
                 fail(i, "any hit");
+
+        // Two rays traced in turn (kernels/geometry/trace_width.h): the same answers as each alone.
+        if (i == 0) continue;
+        const glm::vec3 origin[2] = {rays[i - 1].origin, rays[i].origin};
+        const glm::vec3 direction[2] = {rays[i - 1].direction, rays[i].direction};
+        for (const float limit : {kInfinity, t}) {
+            for (int stop_at_first_hit = 0; stop_at_first_hit < 2; ++stop_at_first_hit) {
+                RayHit pair[2];
+                wf_device::bvh_traverse_pair(scene.bvh.nodes.data(), scene.triangles.data(), origin, direction, limit,
+                                             stop_at_first_hit, pair);
+                for (int k = 0; k < 2; ++k) {
+                    const RayHit alone = wf_device::bvh_traverse(scene.bvh.nodes.data(), scene.triangles.data(),
+                                                                 origin[k], direction[k], limit, stop_at_first_hit);
+                    if (pair[k].triangle != alone.triangle || bits(pair[k].t) != bits(alone.t) ||
+                        bits(pair[k].u) != bits(alone.u) || bits(pair[k].v) != bits(alone.v))
+                        fail(i, "two rays in turn");
+                }
+            }
+        }
     }
     EXPECT_EQ(failures, 0);
     return hits;

@@ -30,6 +30,7 @@ expect "--device --cache-dir" "--spp" cache warm --
 expect "refill passes fullest group auto" "--spp" render scene.gltf --schedule ""
 expect "megakernel" "wavefront" render scene.gltf --integrator m
 expect "0 1 8 16" "" render scene.gltf --lane-width ""
+expect "0 1 2" "" render scene.gltf --trace-width ""
 expect "albedo,depth albedo,normal" "depth" render scene.gltf --aov albedo,
 expect "0 cpu gpu all" "" render scene.gltf --device ""
 expect "--schedule --spp --max-depth" "--frobnicate" render scene.gltf --

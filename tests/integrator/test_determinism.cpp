@@ -90,6 +90,14 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
             << "group, lane width " << width;
     }
     settings.lane_width = RenderSettings{}.lane_width;
+    settings.trace_width = 2; // two rays a work-item (kernels/geometry/trace_width.h); these scenes' default is 1
+    for (const Schedule schedule : {Schedule::Refill, Schedule::Group}) {
+        settings.schedule = schedule;
+        const RenderOutput r = render_file(scene, settings);
+        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << "trace width 2, " << schedule_name(schedule);
+        EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
+    }
+    settings.trace_width = RenderSettings{}.trace_width;
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
         settings.queue_push = push;
