@@ -3,10 +3,11 @@
 // the CPU, over the very same rays in the same run (the throughput study's
 // measurement: ours against Embree's single-ray API, same rays, same threads).
 //
-//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--kernels K] [--json OUT.json]
+//   wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] [--kernels K] [--trace-width W]
+//                       [--json OUT.json]
 //
-// --device and --kernels take what `wavefront render` does (default cpu and
-// auto: ours and Embree on the same cores).
+// --device, --kernels and --trace-width take what `wavefront render` does
+// (default cpu, auto and auto: ours and Embree on the same cores).
 // Three sets of about N rays each: the camera rays of one sample per pixel
 // (coherent), diffuse bounces from points spread over the surfaces by area
 // (incoherent), and shadow segments between two such points (any hit). Our
@@ -57,6 +58,7 @@ struct Options {
     unsigned threads = 2;
     std::string device = "cpu";
     KernelKind kernels = KernelKind::Auto;
+    uint32_t trace_width = 0;
     std::string json;
 };
 
@@ -70,7 +72,7 @@ uint32_t positive(const std::string& flag, const std::string& value) {
 
 Options parse(int argc, const char** argv) {
     const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] "
-                              "[--kernels K] [--json OUT.json]";
+                              "[--kernels K] [--trace-width W] [--json OUT.json]";
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -82,6 +84,10 @@ Options parse(int argc, const char** argv) {
             const std::optional<uint32_t> kind = choice_value(kKernelKindNames, argv[++i]);
             if (!kind) throw InputError(std::string("--kernels ") + argv[i] + ": expected cpu, gpu or auto");
             o.kernels = static_cast<KernelKind>(*kind);
+        }
+        else if (a == "--trace-width" && has_value) {
+            o.trace_width = positive(a, argv[++i]);
+            if (o.trace_width > 2) throw InputError(std::string("--trace-width ") + argv[i] + ": expected 1 or 2");
         }
         else if (a == "--json" && has_value) o.json = argv[++i];
         else if (a.rfind("--", 0) != 0 && o.scene.empty()) o.scene = a;
@@ -243,6 +249,7 @@ int run(const Options& options) {
     Report report;
     RenderSettings settings;
     settings.kernels = options.kernels;
+    settings.trace_width = options.trace_width;
     const KernelProgram program = build_render_program(device, scene, settings, &report.features);
     const EmbreeScene embree(scene.positions, options.threads);
     report.scene = options.scene;

@@ -309,7 +309,6 @@ typedef struct Traversal {
     float t_max;
     uint32_t child; /* the next child to visit */
     int stack_size;
-    int done;
 } Traversal;
 
 typedef struct TraversalStack {
@@ -326,16 +325,15 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->selection = no_hits(t_max);
     t->t_max = t_max;
     t->stack_size = 0;
-    t->done = 0;
     /* Node 0's one child, the top of the tree: its own boxes test the ray
      * against the scene's. */
     t->child = nodes->child[0];
 }
 
-/* One leaf or one node visit; sets t->done once the answer is
+/* One leaf or one node visit; returns 1 once the answer is
  * selected_hit(&t->selection): every child visited, or, when
  * stop_at_first_hit is set, the first hit found. */
-WF_FORCE_INLINE void traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
+WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
                                     WF_GLOBAL const TriangleBlock* triangles,
                                     int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     const uint32_t child = t->child;
@@ -355,10 +353,7 @@ WF_FORCE_INLINE void traversal_step(Traversal* t, TraversalStack* stack, WF_GLOB
                 const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
                 if (!WF_HIT_PASSES(triangles, index, &hit)) continue;
                 select_hit(&t->selection, &hit, index, b->light[lane] >= 0);
-                if (stop_at_first_hit) {
-                    t->done = 1;
-                    return;
-                }
+                if (stop_at_first_hit) return 1;
             }
 #else
             const TriangleLanes lanes = block_lanes(&t->ray, b);
@@ -370,10 +365,7 @@ WF_FORCE_INLINE void traversal_step(Traversal* t, TraversalStack* stack, WF_GLOB
                 const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
                 if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
                 select_hit(&t->selection, &hits[lane], index, b->light[lane] >= 0);
-                if (stop_at_first_hit) {
-                    t->done = 1;
-                    return;
-                }
+                if (stop_at_first_hit) return 1;
             }
 #endif
         }
@@ -402,28 +394,23 @@ WF_FORCE_INLINE void traversal_step(Traversal* t, TraversalStack* stack, WF_GLOB
             }
 #endif
             t->child = node->child[next];
-            return;
+            return 0;
         }
     }
     /* The next pending child, unless the window's end has moved below where
      * it enters its box since it was pushed: its box test would now fail,
      * since the limit scales as the test's own exit does. */
 #if WF_GPU_TRAVERSAL
-    if (t->stack_size == 0) {
-        t->done = 1;
-        return;
-    }
+    if (t->stack_size == 0) return 1;
     t->child = stack->child[--t->stack_size];
 #else
     do {
-        if (t->stack_size == 0) {
-            t->done = 1;
-            return;
-        }
+        if (t->stack_size == 0) return 1;
         --t->stack_size;
     } while (stack->entry[t->stack_size] > t->selection.window_end * (1.0f + 0x1p-21f));
     t->child = stack->child[t->stack_size];
 #endif
+    return 0;
 }
 
 /* The selected hit in (0, t_max), or the first one found when
@@ -434,8 +421,8 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     Traversal t;
     TraversalStack stack;
     traversal_start(&t, nodes, origin, direction, t_max);
-    do traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
-    while (!t.done);
+    while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG)) {
+    }
     return selected_hit(&t.selection);
 }
 
@@ -449,12 +436,13 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
     TraversalStack stack_a, stack_b;
     traversal_start(&a, nodes, origin[0], direction[0], t_max);
     traversal_start(&b, nodes, origin[1], direction[1], t_max);
-    while (!a.done && !b.done) {
-        traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
-        traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    int a_done = 0, b_done = 0;
+    while (!a_done && !b_done) {
+        a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+        b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
     }
-    while (!a.done) traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
-    while (!b.done) traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    while (!a_done) a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    while (!b_done) b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
     hit[0] = selected_hit(&a.selection);
     hit[1] = selected_hit(&b.selection);
 }
