@@ -7,7 +7,7 @@
 # loader, the CLI, the BVH, textures and the program cache, less
 # Bvh.RandomSoupAgreesWithBruteForce (10^9 ray-triangle tests of random
 # geometry, 6 min under ASan). The whole suite takes far longer than CI's
-# share of 2 cores allows; figures in the README.
+# share of 2 cores allows; figures in docs/testing.md.
 # Arguments replace that filter and go to ctest: `scripts/sanitize.sh -R .`
 # runs everything.
 set -euo pipefail

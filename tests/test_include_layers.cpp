@@ -1,4 +1,4 @@
-// test_include_layers.cpp — the layers of host/ (README, "How it works") hold:
+// test_include_layers.cpp — the layers of host/ (docs/how-it-works.md) hold:
 // a file includes only its own layer and those below it, OpenCL's headers
 // appear from device/ up, and in kernels/ ray traversal does not reach the
 // BSDF. Read from the source tree, so a wrong include fails here, by name,

@@ -27,8 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kCornell = WF_SOURCE_DIR "/scenes/cornell-box.gltf";
 // CI runs as root; one PoCL thread a rank. mpirun ends the ranks a second
-// after Ctrl-C by default: three here, for a loaded machine (README). Shared
-// memory without single-copy, which a container may forbid (process_vm_readv).
+// after Ctrl-C by default: three here, for a loaded machine
+// (docs/devices.md). Shared memory without single-copy, which a container may
+// forbid (process_vm_readv).
 const std::string kMpiEnv = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 POCL_MAX_PTHREAD_COUNT=1 "
                             "OMPI_MCA_odls_base_sigkill_timeout=3 OMPI_MCA_btl_vader_single_copy_mechanism=none";
 

@@ -32,7 +32,7 @@ void add_quad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, 
 void add_box_inward(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material);
 
 // Prints one line of what a test measured ("[ measured ] ..."), the figures
-// the README's tables quote.
+// the tables in docs/ quote.
 void report_measured(const std::string& line);
 
 // The furnace: the box [-1, 1]^3 whose inward walls all emit `emission` and
