@@ -55,8 +55,8 @@ bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
 // Rays a work-item traces at once (kernels/geometry/trace_width.h): as asked,
 // else two on a CPU where the scene's triangle blocks alone are more than the
 // device's cache holds. Two paid only there (bench/results/ray-throughput.md,
-// 2026-12-04): MetalRoughSpheresNoTextures' 46 MB of blocks, bounce rays 1.15x;
-// ToyCar's 5 MB, the same speed; the Cornell box's 1 KB, 0.92-0.95x.
+// 2026-12-04): MetalRoughSpheresNoTextures' 50 MB of blocks, bounce rays 1.15-1.2x;
+// ToyCar's 5 MB, the same speed; the Cornell box's 1.5 KB, 0.9x.
 uint32_t trace_width(const DeviceInfo& device, const Scene& scene, const RenderSettings& settings) {
     if (settings.trace_width != 0) return settings.trace_width;
     const unsigned long long blocks =
