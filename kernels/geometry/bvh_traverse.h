@@ -298,10 +298,10 @@ WF_FORCE_INLINE uint32_t nearest_slot(float8 entry, uint32_t met) {
 }
 #endif
 
-/* One ray's traversal between visits, so that it can be resumed: the CPU's
- * kernels advance two rays in turn (bvh_traverse_pair). The pending children
- * are apart from the rest, which an array beside it would keep from living in
- * registers. */
+/* One ray's traversal between visits, so that it can be resumed: two rays
+ * may take turns (bvh_traverse_pair; geometry/trace_width.h says when). The
+ * pending children are kept apart, since an array in the struct would keep
+ * the rest of it from living in registers. */
 typedef struct Traversal {
     WatertightRay ray;
     BoxRay box;
