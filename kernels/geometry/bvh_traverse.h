@@ -77,12 +77,13 @@
  *
  * A GPU's program (WF_GPU_TRAVERSAL) visits in the same order but keeps only
  * the children's words on the stack, which lives in the thread's local
- * memory there, and finds the nearest child in vector registers, where an
- * array indexed by slot would go to local memory too. It drops no popped child
- * by its entry: culling is only ever a saving, so the hits are the same. And
- * it tests a leaf's triangles one at a time (triangle_intersect.h), each
- * against the window the ones before it left: a hit beyond the window cannot
- * change the answer (above), so that too is only a saving.
+ * memory there, and tests a node's boxes one at a time (child_slots_met),
+ * keeping the nearest as it goes, where eight at once held forty-eight planes
+ * in registers. It drops no popped child by its entry: culling is only ever a
+ * saving, so the hits are the same. And it tests a leaf's triangles one at a
+ * time (triangle_intersect.h), each against the window the ones before it
+ * left: a hit beyond the window cannot change the answer (above), so that too
+ * is only a saving.
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -287,14 +288,40 @@ WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL co
 WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u - bits)); }
 
 #if WF_GPU_TRAVERSAL
-/* The slot of `met` with the least entry, the lowest of equal ones, as the
- * CPU's loop over the slots chooses it. */
-WF_FORCE_INLINE uint32_t nearest_slot(float8 entry, uint32_t met) {
-    const int8 is_met = -(((int8)((int)met) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1);
-    const float8 masked = select((float8)(INFINITY), entry, is_met);
-    const float4 m4 = min(masked.lo, masked.hi);
-    const float2 m2 = min(m4.lo, m4.hi);
-    return lowest_bit(lane_bits8(isequal(masked, (float8)(min(m2.x, m2.y)))) & met);
+/* child_entries one slot at a time, as a GPU's program tests the boxes: one
+ * box's six planes live while it is tested, where eight boxes' forty-eight in
+ * vector registers cost the GPU its occupancy (bench/results/gpu-isa.md).
+ * Each slot's arithmetic is child_entries' lane's, so the same slots are met.
+ * Returns them, and in *next the one to visit first: the nearest (the lowest
+ * slot of equal entries, as the CPU's loop chooses it), or the last met when
+ * `last` is set (an any-hit query). */
+WF_FORCE_INLINE uint32_t child_slots_met(const BoxRay* ray, WF_GLOBAL const BvhNode* node, float t_limit, int last,
+                                         uint32_t* next) {
+    uint32_t met = 0u;
+    float nearest = INFINITY;
+    *next = 0u;
+    for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
+        float enter = 0.0f; /* every used slot is met where the origin is unbounded (child_entries) */
+        if (ray->unbounded) {
+            if (node->child[i] == 0u) continue;
+        } else {
+            const float near_x = (node->bounds[ray->near_row[0]][i] - ray->near_origin.x) * ray->inv_direction.x;
+            const float near_y = (node->bounds[ray->near_row[1]][i] - ray->near_origin.y) * ray->inv_direction.y;
+            const float near_z = (node->bounds[ray->near_row[2]][i] - ray->near_origin.z) * ray->inv_direction.z;
+            const float far_x = (node->bounds[ray->near_row[0] ^ 1][i] - ray->far_origin.x) * ray->inv_direction.x;
+            const float far_y = (node->bounds[ray->near_row[1] ^ 1][i] - ray->far_origin.y) * ray->inv_direction.y;
+            const float far_z = (node->bounds[ray->near_row[2] ^ 1][i] - ray->far_origin.z) * ray->inv_direction.z;
+            enter = max(max(near_x, near_y), max(near_z, 0.0f));
+            const float exit = min(min(far_x, far_y), min(far_z, t_limit)) * (1.0f + 0x1p-21f);
+            if (!(enter <= exit)) continue;
+        }
+        met |= 1u << i;
+        if (last || enter < nearest) {
+            nearest = enter;
+            *next = i;
+        }
+    }
+    return met;
 }
 #endif
 
@@ -371,14 +398,16 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
         }
     } else {
         WF_GLOBAL const BvhNode* node = nodes + child;
-        float entry[WF_BVH_WIDTH];
-        const uint32_t met = child_entries(&t->box, node, t->selection.window_end, entry);
-        if (met != 0u) { /* on to the nearest (see above), the others pushed */
 #if WF_GPU_TRAVERSAL
-            const uint32_t next = stop_at_first_hit ? 31u - clz(met) : nearest_slot(vload8(0, entry), met);
+        uint32_t next;
+        const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, stop_at_first_hit, &next);
+        if (met != 0u) { /* on to the nearest (see above), the others pushed */
             for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u)
                 stack->child[t->stack_size++] = node->child[lowest_bit(m)];
 #else
+        float entry[WF_BVH_WIDTH];
+        const uint32_t met = child_entries(&t->box, node, t->selection.window_end, entry);
+        if (met != 0u) { /* on to the nearest (see above), the others pushed */
             uint32_t next = stop_at_first_hit ? 31u - clz(met) : lowest_bit(met);
             if (!stop_at_first_hit)
                 for (uint32_t m = met & (met - 1u); m != 0u; m &= m - 1u) {
