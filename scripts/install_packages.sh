@@ -8,7 +8,7 @@ set -euo pipefail
 
 packages=(cmake g++ pkg-config pocl-opencl-icd ocl-icd-opencl-dev opencl-headers libglm-dev
           libopenimageio-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev python3
-          python3-matplotlib python3-numpy python3-dev python3-pytest pybind11-dev openmpi-bin libopenmpi-dev
+          python3-matplotlib python3-numpy python3-dev python3-venv python3-pytest pybind11-dev openmpi-bin libopenmpi-dev
           help2man "$@")
 missing=()
 for p in "${packages[@]}"; do

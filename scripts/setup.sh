@@ -27,6 +27,23 @@ python="$(python3 -c 'import sys; print(sys.executable)')"
 "$python" -c "import numpy, sys; sys.exit(numpy.__version__ >= '2')" 2>/dev/null ||
   "$python" -m pip install -q "numpy<2"
 if ((tests)); then "$python" -c "import pytest" 2>/dev/null || "$python" -m pip install -q pytest; fi
+# Denoising (render --denoise, render(denoise=True)) opens Intel Open Image
+# Denoise at run time: Debian 12 packages none, so PyPI's pyoidn wheel, which
+# bundles libOpenImageDenoise.so.2 (2.5.1, CPU device), goes into a virtual
+# environment of the build's own, build/oidn-venv, where the renderer looks
+# (host/image/denoiser.h). Without a network the rest goes on and --denoise
+# says it is missing.
+oidn_venv=build/oidn-venv
+if ! compgen -G "$oidn_venv/lib/python3*/site-packages/pyoidn/oidn/lib/libOpenImageDenoise.so.2" >/dev/null; then
+  if "$python" -m venv "$oidn_venv" >/dev/null 2>&1 &&
+     "$oidn_venv/bin/python" -m pip install -q --no-deps --disable-pip-version-check "pyoidn==2.5.1.0" >/dev/null 2>&1
+  then
+    echo "scripts/setup.sh: Open Image Denoise (pyoidn 2.5.1.0) installed in $oidn_venv for --denoise"
+  else
+    rm -rf "$oidn_venv"
+    echo "scripts/setup.sh: warning: could not install pyoidn into $oidn_venv (no network?): --denoise will say it is missing" >&2
+  fi
+fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE="$python"
 cmake --build build --target wavefront wavefront_python -j"$(nproc)"
 # `import wavefront` from anywhere: a .pth file in the interpreter's

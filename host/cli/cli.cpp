@@ -307,6 +307,11 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                                    "none"))
         ->delimiter(',')
         ->check(CLI::IsMember({"albedo", "normal", "depth", "bounces"}));
+    render.add_flag("--denoise", o.denoise,
+                    with_default("Denoise the image with Intel Open Image Denoise 2.x (its RT filter, guided by the "
+                                 "albedo and normal AOVs, which it turns on); an .exr keeps the noisy image as the "
+                                 "layer noisy.R/G/B. Needs libOpenImageDenoise.so.2: scripts/setup.sh installs it, "
+                                 "or set WF_OIDN_LIBRARY", "off"));
 
     const std::string error = "Error against time";
     render.add_option("--reference", o.reference,
@@ -390,6 +395,8 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
         for (const auto& [name, bit] : kFirstHitAovs)
             if (aov == name) s.aovs |= bit;
     }
+    o.aovs_asked = s.aovs;
+    if (o.denoise) s.aovs |= WF_AOV_ALBEDO | WF_AOV_NORMAL; // the denoiser's guides
     if (std::abs(o.exposure) > 64.0f) // 2^64 already turns any radiance white or black
         throw InputError("render: --exposure: " + as_text(o.exposure) + " is not in -64 to 64");
     if (o.exposure != 0.0f && holds_float_radiance(o.output))

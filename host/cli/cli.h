@@ -39,6 +39,9 @@ struct RenderOptions {
     float exposure = 0.0f;         // 8-bit outputs: scaled by 2^exposure before the sRGB curve
     bool half = false;             // float outputs: 16-bit half channels
     bool quiet = false;            // errors only: no progress line, table, report, warning or note
+    bool denoise = false;          // the image denoised by Open Image Denoise (image/denoiser.h); its albedo
+                                   // and normal AOVs are on, settings.aovs holding them
+    uint32_t aovs_asked = 0;       // the WF_AOV_* bits --aov named, beside those --denoise turns on
     int ranks = 1;                 // MPI ranks sharing the render: set by cluster_render.cpp, not a flag
 };
 

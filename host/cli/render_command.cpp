@@ -18,6 +18,7 @@
 #include "base/file_fingerprint.h"
 #include "base/output_files.h"
 #include "gltf/gltf_loader.h"
+#include "image/denoiser.h"
 #include "image/image_io.h"
 #include "cli/interrupt.h"
 #include "film/partial_render.h"
@@ -118,6 +119,12 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size) {
             {"version", WF_VERSION}};
 }
 
+// The options of an image that --denoise made: those of the render, and the denoiser.
+ImageOptions with_denoiser(ImageOptions options) {
+    options.push_back({"denoise", "Open Image Denoise 2.x, RT filter, hdr, prefiltered albedo and normal"});
+    return options;
+}
+
 // What a partial render must share with this one to go on: every option but
 // the scene's path, since the scene's contents decide wherever it now lies.
 ImageOptions resume_checks(ImageOptions options) {
@@ -185,6 +192,7 @@ void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& 
 
 RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop) {
     RenderSettings settings = options.settings;
+    if (options.denoise) settings.aovs |= WF_AOV_ALBEDO | WF_AOV_NORMAL; // the denoiser's guides
     settings.cache_dir = cache_directory(options.cache_dir);
     settings.stop = stop;
     return settings;
@@ -193,6 +201,8 @@ RenderSettings device_settings(const RenderOptions& options, const std::atomic<i
 RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::ostream& log,
                          const RenderHooks& hooks) {
     const auto start = std::chrono::steady_clock::now();
+    // Before anything is read or written: a render that cannot be denoised is not begun.
+    if (options.denoise) denoiser_library();
     check_outputs(options, hooks.write_image);
     Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera});
     light_for_render(scene, options, log);
@@ -202,9 +212,14 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
-    const bool layers = options.settings.bounce_layers || options.settings.aovs;
+    // The layers asked for; --denoise's albedo and normal go to a float output only.
+    const bool layers =
+        options.settings.bounce_layers || (options.denoise ? options.aovs_asked : options.settings.aovs);
     if (layers && (options.checkpoint_every > 0.0 || !options.resume.empty()))
         throw InputError("--aov layers cannot be checkpointed or resumed (a partial render keeps the image alone)");
+    if (options.denoise && (options.checkpoint_every > 0.0 || !options.resume.empty()))
+        throw InputError("--denoise cannot be checkpointed or resumed (a partial render keeps the image alone, "
+                         "not the albedo and normal it needs)");
     // Checked before the long set-up.
     const ImageOptions shaping = image_options(options, size);
     std::optional<PartialRender> resumed;
@@ -301,6 +316,17 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     summary.interrupted_by = stop->load();
     summary.spp = film.min_samples;
     summary.resumed_from_spp = progress.start_spp;
+    // The denoised image, of whatever samples finished (none: nothing to denoise).
+    std::optional<Image> denoised;
+    if (options.denoise && summary.stats.samples > 0) {
+        const auto denoise_start = std::chrono::steady_clock::now();
+        denoised = denoise(film.mean, *film.albedo, *film.normal);
+        if (!options.quiet)
+            log << "note: denoised by Open Image Denoise (" << denoiser_library() << ") in " << std::fixed
+                << std::setprecision(2)
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - denoise_start).count()
+                << std::defaultfloat << " s\n";
+    }
     if (hooks.write_image) {
         metadata.samples_per_pixel = film.min_samples;
         metadata.render_seconds = summary.stats.seconds;
@@ -310,7 +336,18 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         const bool computed = summary.stats.samples > 0;
         if (summary.interrupted_by && !computed)
             log << "interrupted before any sample finished: nothing written\n";
-        else
+        else if (denoised) {
+            // The noisy image stays beside the denoised one where the format holds layers.
+            std::vector<ImageLayer> kept;
+            if (holds_float_radiance(options.output)) {
+                kept = aov_layers(film);
+                kept.insert(kept.begin(), ImageLayer{"noisy", film.mean});
+            }
+            ImageMetadata denoised_metadata = metadata;
+            denoised_metadata.options = with_denoiser(metadata.options);
+            write_image(options.output, *denoised, denoised_metadata, kept,
+                        ImageEncoding{options.half, options.exposure});
+        } else
             write_image(options.output, film.mean, metadata, aov_layers(film),
                         ImageEncoding{options.half, options.exposure});
         std::error_code ignored;
@@ -330,6 +367,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     summary.times.load = load_seconds;
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, summary);
     if (hooks.film) *hooks.film = film;
+    if (hooks.denoised && denoised) *hooks.denoised = std::move(*denoised);
     return summary;
 }
 

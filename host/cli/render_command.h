@@ -33,6 +33,8 @@ struct RenderHooks {
     // nor a partial render is written (nor checked beforehand).
     FilmReadout* film = nullptr;
     bool write_image = true;
+    // With options.denoise, receives the denoised image (film->mean stays the noisy one).
+    Image* denoised = nullptr;
 };
 
 // Runs one render as the options say: checkpoints as a table on `out` (and in

@@ -46,6 +46,7 @@ struct PyScene {
 // The render's result as Python sees it.
 struct PyResult {
     py::array_t<float> image, variance;
+    py::object noisy = py::none(); // with denoise=True: the image before denoising
     py::dict bounce_layers, aovs;
     RenderSummary summary;
     std::vector<Checkpoint> checkpoints;
@@ -122,7 +123,9 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
 
     PyResult result;
     FilmReadout film;
+    Image denoised;
     RenderHooks hooks;
+    hooks.denoised = &denoised;
     hooks.scene = loaded ? &scene.cast<const PyScene&>().scene : nullptr;
     hooks.reference = reference ? &*reference : nullptr;
     hooks.stop = &g_stop;
@@ -153,6 +156,10 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
         result.summary = run_render(parsed, quiet, quiet, hooks);
     }
     result.image = to_array(film.mean);
+    if (!denoised.rgb.empty()) { // denoise=True
+        result.noisy = result.image;
+        result.image = to_array(denoised);
+    }
     result.variance = to_array(film.variance_of_mean);
     if (film.albedo) result.aovs["albedo"] = to_array(*film.albedo);
     if (film.normal) result.aovs["normal"] = to_array(*film.normal);
@@ -313,7 +320,9 @@ PYBIND11_MODULE(wavefront, m) {
         });
 
     py::class_<PyResult>(m, "Result", "A finished render")
-        .def_readonly("image", &PyResult::image, "linear radiance, height x width x 3, float32")
+        .def_readonly("image", &PyResult::image,
+                      "linear radiance, height x width x 3, float32; with denoise=True, denoised")
+        .def_readonly("noisy", &PyResult::noisy, "with denoise=True: the image before denoising; else None")
         .def_readonly("variance", &PyResult::variance, "the variance of each pixel's mean")
         .def_readonly("bounce_layers", &PyResult::bounce_layers, "with aov='bounces': name -> image")
         .def_readonly("aovs", &PyResult::aovs,
