@@ -354,7 +354,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         if (summary.interrupted_by && computed) {
             write_partial();
             log << "interrupted: wrote " << options.output << " (" << film.min_samples << "+ spp) and "
-                << partial_path << "; go on with --resume " << partial_path << "\n";
+                << partial_path << "; go on with --resume " << partial_path
+                << (options.denoise ? " (without --denoise: the partial keeps the image alone)" : "") << "\n";
         } else if (!summary.interrupted_by) {
             // The image is whole: the partial it was checkpointed to, or resumed from, is stale.
             if (partial_written || (resumed && std::filesystem::equivalent(options.resume, partial_path, ignored)))
