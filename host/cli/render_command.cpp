@@ -321,11 +321,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.denoise && summary.stats.samples > 0) {
         const auto denoise_start = std::chrono::steady_clock::now();
         denoised = denoise(film.mean, *film.albedo, *film.normal);
-        if (!options.quiet)
-            log << "note: denoised by Open Image Denoise (" << denoiser_library() << ") in " << std::fixed
-                << std::setprecision(2)
-                << std::chrono::duration<double>(std::chrono::steady_clock::now() - denoise_start).count()
-                << std::defaultfloat << " s\n";
+        summary.times.denoise =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - denoise_start).count();
+        if (!options.quiet) log << "note: denoised by Open Image Denoise (" << denoiser_library() << ")\n";
     }
     if (hooks.write_image) {
         metadata.samples_per_pixel = film.min_samples;

@@ -336,6 +336,7 @@ PYBIND11_MODULE(wavefront, m) {
         .def_property_readonly("device_bytes", [](const PyResult& r) { return r.summary.device_bytes; })
         .def_property_readonly("shares", [](const PyResult& r) { return r.summary.shares; })
         .def_property_readonly("kernel_build_seconds", [](const PyResult& r) { return r.summary.times.kernel_build; })
+        .def_property_readonly("denoise_seconds", [](const PyResult& r) { return r.summary.times.denoise; })
         .def_property_readonly("report", [](const PyResult& r) {
             std::ostringstream out;
             print_report(out, r.summary);

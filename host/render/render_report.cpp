@@ -41,7 +41,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes
         << " nodes, depth " << s.bvh_depth << "), kernel build " << s.times.kernel_build << " s"
         << (s.kernels_from_cache ? " (from cache)" : "") << ", render "
-        << st.seconds << " s\n";
+        << st.seconds << " s";
+    if (s.times.denoise > 0.0) out << ", denoise " << s.times.denoise << " s";
+    out << "\n";
     out << std::setprecision(2);
     out << "samples    " << st.samples << " at " << per_second(st.samples, st.seconds) * 1e-6 << " M/s; mean path "
         << per_second(st.closest_rays, st.samples) << " segments; non-finite samples " << st.nonfinite_samples << "\n";

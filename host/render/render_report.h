@@ -14,6 +14,7 @@ struct RenderTimes {
     double load = 0.0;
     double bvh_build = 0.0;
     double kernel_build = 0.0;
+    double denoise = 0.0; // --denoise: Open Image Denoise's filters (image/denoiser.h)
 };
 
 // One device's part in a render over several (render/renderer.h).

@@ -36,6 +36,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["times"] = {{"load", s.times.load},
                   {"bvh_build", s.times.bvh_build},
                   {"kernel_build", s.times.kernel_build},
+                  {"denoise", s.times.denoise},
                   {"kernels_from_cache", s.kernels_from_cache},
                   {"render", st.seconds},
                   {"kernels", st.kernel_seconds()}};
