@@ -79,6 +79,7 @@ def main():
 
     if args.plot:
         import matplotlib
+        import matplotlib.ticker
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(6, 4))
@@ -88,8 +89,9 @@ def main():
             ax.loglog(spp, [p[2] for p in points], "s-", color=colour, label=f"{name}, denoised")
         ax.set_xlabel("samples per pixel")
         ax.set_ylabel(f"relMSE against {args.ref_spp} spp")
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xticks(SPPS, [str(s) for s in SPPS])
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="lower left")
         fig.tight_layout()
         fig.savefig(args.plot, dpi=120)
 
