@@ -1,8 +1,10 @@
 # install.cmake — `cmake --install build [--prefix P]`: the wavefront
 # program, its man page (help2man, from its own --help) and bash completion,
-# and the renderer as a library, wavefront::wavefront, with its headers and a
+# the renderer as a library, wavefront::wavefront, with its headers and a
 # CMake package, so that find_package(wavefront) works
-# (examples/render_scene builds against it, tests/install/).
+# (examples/render_scene builds against it, tests/install/), and the Python
+# module, alone in the component `python` that `pip install .` installs
+# (pyproject.toml).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -31,3 +33,16 @@ else()
 endif()
 install(FILES scripts/wavefront-completion.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME wavefront)
+
+# `import wavefront`: in the wheel's root when pip builds it (scikit-build-core
+# sets SKBUILD), else in the prefix's site-packages for the interpreter it was
+# built for.
+if(TARGET wavefront_python)
+  if(SKBUILD)
+    set(WF_PYTHON_INSTALL_DIR .)
+  else()
+    set(WF_PYTHON_INSTALL_DIR
+        ${CMAKE_INSTALL_LIBDIR}/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/site-packages)
+  endif()
+  install(TARGETS wavefront_python LIBRARY DESTINATION ${WF_PYTHON_INSTALL_DIR} COMPONENT python)
+endif()
