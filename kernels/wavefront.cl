@@ -7,7 +7,7 @@
  * slot in the queue it consumes (the stage list of wavefront/stage_graph.h),
  * calls its stage function (stages/), and appends the slot to the queue that
  * function returns. The stage functions are the megakernel's too
- * (megakernel.cl); host/integrator/wavefront_scheduler.cpp launches these.
+ * (megakernel.cl); host/integrator/wavefront_integrator.cpp launches these.
  * group_wavefront, last, runs the same stages inside each work-group, over
  * local queues indexed by the same queue ids. */
 #include "kernel_params.h"

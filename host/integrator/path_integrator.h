@@ -4,8 +4,8 @@
 //
 // Two integrators run the same stage functions (kernels/stages/) and give the
 // same bytes for the same seed:
-//   WavefrontScheduler (wavefront_scheduler.h): one kernel per stage, over queues;
-//   MegakernelScheduler (megakernel_scheduler.h): one kernel takes each path
+//   WavefrontIntegrator (wavefront_integrator.h): one kernel per stage, over queues;
+//   MegakernelIntegrator (megakernel_integrator.h): one kernel takes each path
 //   through every stage.
 // A render is a sequence of rounds, each taking every pixel to a target sample
 // count; between rounds the film can be read. Since a pixel's samples are

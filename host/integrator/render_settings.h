@@ -19,7 +19,7 @@ namespace wf {
 
 enum class Integrator { Wavefront, Megakernel };
 
-// In which order the wavefront launches its stages (wavefront_scheduler.cpp).
+// In which order the wavefront launches its stages (wavefront_integrator.cpp).
 enum class Schedule {
     Refill,  // every stage once per iteration, freed slots refilled at once
     Passes,  // pbrt-v4: a pass of one sample per slot runs to its end before the next starts

@@ -8,10 +8,10 @@
 
 #include "base/errors.h"
 #include "device/layout_check.h"
-#include "integrator/megakernel_scheduler.h"
+#include "integrator/megakernel_integrator.h"
 #include "integrator/path_pool.h"
 #include "device/scene_features.h"
-#include "integrator/wavefront_scheduler.h"
+#include "integrator/wavefront_integrator.h"
 
 namespace wf {
 namespace {
@@ -153,11 +153,11 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     device_scene_ = upload_scene(device.context, data);
     const Camera device_camera = make_device_camera(camera, size);
     if (settings.integrator == Integrator::Megakernel)
-        integrator_ = std::make_unique<MegakernelScheduler>(device, program_.program, device_scene_, device_camera,
-                                                            settings);
+        integrator_ = std::make_unique<MegakernelIntegrator>(device, program_.program, device_scene_, device_camera,
+                                                             settings);
     else
-        integrator_ = std::make_unique<WavefrontScheduler>(device, program_.program, device_scene_, device_camera,
-                                                           settings);
+        integrator_ = std::make_unique<WavefrontIntegrator>(device, program_.program, device_scene_, device_camera,
+                                                            settings);
 
     summary_.device = device.info.name + " (" + device.info.type + ", " + std::to_string(device.info.compute_units) +
                       " compute units, " + device.info.platform + ")";

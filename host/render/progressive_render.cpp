@@ -1,7 +1,7 @@
 // progressive_render.cpp — round sizes: doubling by default; with
 // --report-every, as many samples as the measured rate fits in that time; and
 // never more than the time budget has left. Rounds change nothing in the image
-// (wavefront_scheduler.h), only when the film is looked at.
+// (wavefront_integrator.h), only when the film is looked at.
 #include "render/progressive_render.h"
 
 #include <algorithm>

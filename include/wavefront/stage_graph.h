@@ -7,7 +7,7 @@
  * per queue in one buffer, each with a counter in the counter buffer
  * (wavefront/counters.h). A slot is in one queue at a time, and each queue
  * has one consumer, which takes it whole before the host zeroes its counter
- * (host/integrator/wavefront_scheduler.cpp); so the stages may run in any
+ * (host/integrator/wavefront_integrator.cpp); so the stages may run in any
  * order, and one extension queue serves both generate and roulette. The
  * order lets the refill schedule clear the counters of each phase with one
  * fill: [EXTEND, REGENERATE] once shade has consumed them, the rest at the end

@@ -1,4 +1,4 @@
-// wavefront_scheduler.h — the host loop that drives the stage kernels over
+// wavefront_integrator.h — the host loop that drives the stage kernels over
 // the path pool until every pixel has its samples.
 //
 //   generate → intersect → shade → intersect_shadow → roulette → accumulate
@@ -29,10 +29,10 @@
 
 namespace wf {
 
-class WavefrontScheduler : public PathIntegrator {
+class WavefrontIntegrator : public PathIntegrator {
 public:
-    WavefrontScheduler(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
-                       const Camera& camera, const RenderSettings& settings);
+    WavefrontIntegrator(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
+                        const Camera& camera, const RenderSettings& settings);
 
     void render_to(uint32_t spp) override;
 

@@ -1,5 +1,5 @@
-// wavefront_scheduler.cpp — the three schedules of the stage kernels.
-#include "integrator/wavefront_scheduler.h"
+// wavefront_integrator.cpp — the three schedules of the stage kernels.
+#include "integrator/wavefront_integrator.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,9 +9,9 @@
 
 namespace wf {
 
-WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Program& program,
-                                       const DeviceScene& scene, const Camera& camera,
-                                       const RenderSettings& settings)
+WavefrontIntegrator::WavefrontIntegrator(const OpenClDevice& device, const cl::Program& program,
+                                        const DeviceScene& scene, const Camera& camera,
+                                        const RenderSettings& settings)
     : PathIntegrator(device, scene, camera, settings) {
     for (int s = 0; s < kStageKernels; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
     if (settings.schedule == Schedule::Group) group_ = cl::Kernel(program, stats_.stages[STAGE_GROUP].name);
@@ -25,7 +25,7 @@ WavefrontScheduler::WavefrontScheduler(const OpenClDevice& device, const cl::Pro
     }
 }
 
-void WavefrontScheduler::extend(uint32_t items) {
+void WavefrontIntegrator::extend(uint32_t items) {
     launch(STAGE_INTERSECT, items);
     if (settings_.sort_materials) {
         PathIntegrator::launch(STAGE_SORT, count_materials_, items);
@@ -40,7 +40,7 @@ void WavefrontScheduler::extend(uint32_t items) {
 
 // Every kernel's arguments: the shared ones (stage_args.h), then the sort's
 // own. The render constants change from round to round.
-void WavefrontScheduler::set_stage_args() {
+void WavefrontIntegrator::set_stage_args() {
     const StageArgs shared = stage_args();
     for (cl::Kernel& k : kernels_) wf::set_stage_args(k, shared);
     if (settings_.schedule == Schedule::Group) wf::set_stage_args(group_, shared);
@@ -51,7 +51,7 @@ void WavefrontScheduler::set_stage_args() {
     }
 }
 
-void WavefrontScheduler::render_to(uint32_t spp) {
+void WavefrontIntegrator::render_to(uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
     params_.spp = spp;
     set_stage_args();
@@ -74,7 +74,7 @@ void WavefrontScheduler::render_to(uint32_t spp) {
 // of its paths to roulette and the rest to accumulation, and roulette ends
 // some, so those two are sized for everything that may reach them; their
 // kernels stop at the queue's final length.
-void WavefrontScheduler::run_iterations(bool passes) {
+void WavefrontIntegrator::run_iterations(bool passes) {
     const cl::CommandQueue& queue = device_.queue;
     const uint32_t pool = params_.pool_size;
     uint32_t extending = 0, regenerating = pool;
@@ -105,7 +105,7 @@ void WavefrontScheduler::run_iterations(bool passes) {
 // shade over the same slots), which takes it whole; its counter is then
 // zeroed. Ties go to the later stage, which brings paths nearer their end:
 // the queues in the reverse of the order the stage list consumes them.
-void WavefrontScheduler::run_fullest_first() {
+void WavefrontIntegrator::run_fullest_first() {
     std::vector<int> later_first;
     for (int s = kStageKernels - 1; s >= 0; --s)
         if (std::find(later_first.begin(), later_first.end(), kStageQueue[s]) == later_first.end())
@@ -126,7 +126,7 @@ void WavefrontScheduler::run_fullest_first() {
     }
 }
 
-Stage WavefrontScheduler::consumer_of(QueueId queue) {
+Stage WavefrontIntegrator::consumer_of(QueueId queue) {
     for (int s = 0; s < kStageKernels; ++s)
         if (kStageQueue[s] == queue) return static_cast<Stage>(s);
     throw std::logic_error("no stage consumes queue " + std::to_string(queue));

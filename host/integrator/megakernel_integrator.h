@@ -1,4 +1,4 @@
-// megakernel_scheduler.h — drives kernels/megakernel.cl: each launch takes one
+// megakernel_integrator.h — drives kernels/megakernel.cl: each launch takes one
 // sample of every slot that has samples left through the whole path, so a
 // round is spp × (pixels per slot) launches and there are no queues to read
 // between stages. The comparison with the wavefront is Laine, Karras and
@@ -9,10 +9,10 @@
 
 namespace wf {
 
-class MegakernelScheduler : public PathIntegrator {
+class MegakernelIntegrator : public PathIntegrator {
 public:
-    MegakernelScheduler(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
-                        const Camera& camera, const RenderSettings& settings);
+    MegakernelIntegrator(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
+                         const Camera& camera, const RenderSettings& settings);
 
     void render_to(uint32_t spp) override;
 

@@ -1,16 +1,16 @@
-// megakernel_scheduler.cpp — one launch per sample of every slot.
-#include "integrator/megakernel_scheduler.h"
+// megakernel_integrator.cpp — one launch per sample of every slot.
+#include "integrator/megakernel_integrator.h"
 
 #include <chrono>
 
 namespace wf {
 
-MegakernelScheduler::MegakernelScheduler(const OpenClDevice& device, const cl::Program& program,
-                                         const DeviceScene& scene, const Camera& camera,
-                                         const RenderSettings& settings)
+MegakernelIntegrator::MegakernelIntegrator(const OpenClDevice& device, const cl::Program& program,
+                                          const DeviceScene& scene, const Camera& camera,
+                                          const RenderSettings& settings)
     : PathIntegrator(device, scene, camera, settings), kernel_(program, "megakernel") {}
 
-void MegakernelScheduler::render_to(uint32_t spp) {
+void MegakernelIntegrator::render_to(uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
     params_.spp = spp;
     set_stage_args(kernel_, stage_args());
