@@ -191,8 +191,7 @@ void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& 
 }
 
 RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop) {
-    RenderSettings settings = options.settings;
-    if (options.denoise) settings.aovs |= WF_AOV_ALBEDO | WF_AOV_NORMAL; // the denoiser's guides
+    RenderSettings settings = options.settings; // with --denoise's guides among its AOVs (cli.cpp)
     settings.cache_dir = cache_directory(options.cache_dir);
     settings.stop = stop;
     return settings;
