@@ -125,6 +125,17 @@ typedef struct LocalQueue {
 
 WF_INLINE void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&q->length)] = slot; }
 
+/* The slots work-item `lid` traces from a local queue, WF_TRACE_WIDTH of them
+ * (geometry/trace_width.h), as queue_slots_to_trace takes them from a global
+ * one; returns how many (none for the group's later work-items). */
+WF_INLINE uint local_slots_to_trace(__local const LocalQueue* q, uint lid, uint* slot) {
+    const uint first = WF_TRACE_WIDTH * lid;
+    if (first >= q->length) return 0u;
+    const uint count = min((uint)WF_TRACE_WIDTH, q->length - first);
+    for (uint i = 0u; i < count; ++i) slot[i] = q->slots[first + i];
+    return count;
+}
+
 __kernel void group_wavefront(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local LocalQueue queue[WF_QUEUE_COUNT]; /* the global queues' local twins, by QueueId */
@@ -152,11 +163,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     barrier(CLK_LOCAL_MEM_FENCE);
     if (lid == 0) entered[WF_QUEUE_REGENERATE] = queue[WF_QUEUE_EXTEND].length;
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
-        if (WF_TRACE_WIDTH * lid < extending) { /* WF_TRACE_WIDTH paths a work-item (geometry/trace_width.h) */
+        {
             uint slot[WF_TRACE_WIDTH];
-            const uint count = min((uint)WF_TRACE_WIDTH, extending - WF_TRACE_WIDTH * lid);
-            for (uint i = 0u; i < count; ++i) slot[i] = queue[WF_QUEUE_EXTEND].slots[WF_TRACE_WIDTH * lid + i];
-            intersect_paths(&path, slot, count, &scene);
+            const uint count = local_slots_to_trace(&queue[WF_QUEUE_EXTEND], lid, slot);
+            if (count > 0u) intersect_paths(&path, slot, count, &scene);
         }
 #ifdef WF_GROUP_LANES
         if (lid == 0) lanes_length = 0u;
@@ -204,11 +214,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             entered[WF_QUEUE_EXTEND] += extending;
             queue[WF_QUEUE_EXTEND].length = 0u;
         }
-        if (WF_TRACE_WIDTH * lid < queue[WF_QUEUE_SHADOW].length) {
+        {
             uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
-            const uint count = min((uint)WF_TRACE_WIDTH, queue[WF_QUEUE_SHADOW].length - WF_TRACE_WIDTH * lid);
-            for (uint i = 0u; i < count; ++i) slot[i] = queue[WF_QUEUE_SHADOW].slots[WF_TRACE_WIDTH * lid + i];
-            trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
+            const uint count = local_slots_to_trace(&queue[WF_QUEUE_SHADOW], lid, slot);
+            if (count > 0u) trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
             shadow_rays += count;
             for (uint i = 0u; i < count; ++i) local_push(&queue[next[i]], slot[i]);
         }
