@@ -4,8 +4,9 @@
  * WF_STAGE_PARAMS is, in order: one __global pointer per path-state field
  * (include/wavefront/path_state.h), per scene buffer (scene_buffers.h) and per
  * film buffer (film_buffers.h), then the render constants, the camera, the
- * queues and the counters. Every stage kernel and the megakernel take the
- * same list, so the host binds them all with one loop over the same lists
+ * queues, the counters and the pixel list (kernels/path_view.h). Every stage
+ * kernel and the megakernel take the same list, so the host binds them all
+ * with one loop over the same lists
  * (host/integrator/stage_args.cpp); a kernel's own arguments follow it.
  * WF_BIND_STAGE_ARGS gathers the pointers into `path`, `scene` and `film`. */
 #ifndef WF_KERNEL_PARAMS_H
@@ -27,10 +28,11 @@
 
 #define WF_STAGE_PARAMS                                                                            \
     WF_PATH_STATE(WF_PATH_PARAM) WF_SCENE_BUFFERS(WF_SCENE_PARAM) WF_FILM_BUFFERS(WF_FILM_PARAM)   \
-    const RenderParams params, const Camera camera, __global uint *queues, volatile __global uint *counters
+    const RenderParams params, const Camera camera, __global uint *queues, volatile __global uint *counters,  \
+    __global const uint *pixel_list
 
 #define WF_BIND_STAGE_ARGS                                                                         \
-    PathState path = {WF_PATH_STATE(WF_PATH_ARG)};                                                 \
+    PathState path = {WF_PATH_STATE(WF_PATH_ARG) pixel_list};                                                 \
     const Scene scene = {WF_SCENE_BUFFERS(WF_SCENE_ARG)};                                          \
     const FilmBuffers film = {WF_FILM_BUFFERS(WF_FILM_ARG)}
 

@@ -15,6 +15,7 @@
 #define WF_PATH_MEMBER(type, name, what) __global type* name;
 typedef struct PathState {
     WF_PATH_STATE(WF_PATH_MEMBER)
+    __global const uint* pixel_list; /* the pixels traced, where RenderParams.pixel_list says so */
 } PathState;
 #undef WF_PATH_MEMBER
 
@@ -44,7 +45,9 @@ WF_INLINE bool shadow_then_continues(float4 shadow_radiance) {
 
 /* Of the traced pixels, from `first`, slot i owns first + i, first + i + pool,
  * first + i + 2·pool, ... and takes them in turn, a sample of each: its n-th
- * sample (from 0) is sample n / owned of pixel first + i + (n % owned)·pool. */
+ * sample (from 0) is sample n / owned of pixel first + i + (n % owned)·pool,
+ * or of the pixel that entry of the pixel list names (adaptive sampling's
+ * unfinished pixels, host/render/adaptive_sampling.h). */
 typedef struct PathSample {
     uint pixel;
     uint sample; /* its index within the pixel */
@@ -54,17 +57,18 @@ WF_INLINE uint pixels_owned(const RenderParams* params, uint slot) {
     return (params->traced_pixels - 1u - slot) / params->pool_size + 1u;
 }
 
-WF_INLINE PathSample nth_sample(const RenderParams* params, uint slot, uint n) {
+WF_INLINE PathSample nth_sample(const PathState* path, const RenderParams* params, uint slot, uint n) {
     const uint owned = pixels_owned(params, slot);
+    const uint traced = params->first_pixel + slot + (n % owned) * params->pool_size;
     PathSample s;
-    s.pixel = params->first_pixel + slot + (n % owned) * params->pool_size;
+    s.pixel = params->pixel_list ? path->pixel_list[traced] : traced;
     s.sample = n / owned;
     return s;
 }
 
 /* The sample the slot's path is tracing. */
 WF_INLINE PathSample current_sample(const PathState* path, const RenderParams* params, uint slot) {
-    return nth_sample(params, slot, path_samples_started(path, slot) - 1u);
+    return nth_sample(path, params, slot, path_samples_started(path, slot) - 1u);
 }
 
 /* Whether this work-item has a path in `queue` (the queue is shorter than

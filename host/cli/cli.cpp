@@ -303,10 +303,11 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
     render.add_option("--aov", f.aovs,
                       with_default("Extra EXR layers, comma-separated: albedo, normal, depth (the first hit's base "
                                    "colour, shading normal and distance, for a denoiser or compositor); bounces "
-                                   "(the radiance after 0, 1, ..., 6 and 7+ reflections)",
+                                   "(the radiance after 0, 1, ..., 6 and 7+ reflections); samples (how many "
+                                   "each pixel took, which --adaptive varies)",
                                    "none"))
         ->delimiter(',')
-        ->check(CLI::IsMember({"albedo", "normal", "depth", "bounces"}));
+        ->check(CLI::IsMember({"albedo", "normal", "depth", "bounces", "samples"}));
     render.add_flag("--denoise", o.denoise,
                     with_default("Denoise the image with Intel Open Image Denoise 2.x (its RT filter, guided by the "
                                  "albedo and normal AOVs, which it turns on); an .exr keeps the noisy image as the "
@@ -338,6 +339,12 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                       with_default("Stop once the estimated relMSE is below X, checked from 16 spp on", "none"))
         ->check(finite_number(Lowest::AboveZero))
         ->type_name("X")
+        ->group(error);
+    render.add_flag("--adaptive", o.progress.adaptive,
+                    with_default("Adaptive sampling: from 16 spp on, each pixel stops once its estimated relMSE "
+                                 "(the mean of its 3x3 neighbourhood's) is below --target-error, unless a neighbour "
+                                 "goes on; the render ends when every pixel has stopped, or at --spp or --time",
+                                 "off"))
         ->group(error);
 
     const std::string long_renders = "Long renders";
@@ -392,7 +399,7 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
     s.sampler = index_of(kSamplerNames, f.sampler);
     for (const std::string& aov : f.aovs) {
         if (aov == "bounces") s.bounce_layers = 8;
-        for (const auto& [name, bit] : kFirstHitAovs)
+        for (const auto& [name, bit] : kAovBits)
             if (aov == name) s.aovs |= bit;
     }
     o.aovs_asked = s.aovs;
@@ -410,6 +417,8 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
         throw InputError("render: --sort-materials sorts the wavefront's queue; the megakernel has none");
     if (s.schedule == Schedule::Group && s.sort_materials)
         throw InputError("render: --sort-materials sorts the wavefront's global queue; --schedule group has none");
+    if (o.progress.adaptive && o.progress.target_relmse <= 0.0)
+        throw InputError("render: --adaptive stops each pixel at --target-error; give one");
     // A time budget or a target error alone leaves the sample count open.
     const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
     o.progress.max_spp = !f.spp_flag->count() && open_ended ? 0 : s.spp;
@@ -462,7 +471,7 @@ void check_config_values(const std::string& path, const std::vector<ConfigFlag>&
 
 std::string aov_names(const RenderSettings& s) {
     std::string names;
-    for (const auto& [name, bit] : kFirstHitAovs)
+    for (const auto& [name, bit] : kAovBits)
         if (s.aovs & bit) names += (names.empty() ? "" : ",") + std::string(name);
     if (s.bounce_layers) names += names.empty() ? "bounces" : ",bounces";
     return names.empty() ? "none" : names;

@@ -151,6 +151,7 @@ std::vector<ImageLayer> aov_layers(const FilmReadout& film) {
     if (film.albedo) layers.push_back({"albedo", *film.albedo});
     if (film.normal) layers.push_back({"normal", *film.normal, {"X", "Y", "Z"}});
     if (film.depth) layers.push_back({"depth", *film.depth, {"Z"}});
+    if (film.samples) layers.push_back({"samples", *film.samples, {"Y"}});
     for (size_t i = 0; i < film.bounce_layers.size(); ++i)
         layers.push_back({bounce_layer_name(i, film.bounce_layers.size()), film.bounce_layers[i]});
     return layers;
@@ -314,6 +315,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
             if (share.device.rfind("rank ", 0) != 0) share.device = "rank 0: " + share.device;
     summary.interrupted_by = stop->load();
     summary.spp = film.min_samples;
+    summary.most_spp = film.max_samples;
+    summary.mean_spp = film.mean_samples;
     summary.resumed_from_spp = progress.start_spp;
     // The denoised image, of whatever samples finished (none: nothing to denoise).
     std::optional<Image> denoised;

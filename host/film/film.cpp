@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 
 #include "wavefront/aovs.h"
@@ -12,7 +13,7 @@
 // Planes of one element per pixel in a buffer of each extent (film_buffers.h).
 #define WF_FILM_PLANES_PIXEL(bounce_layers, aovs) 1u
 #define WF_FILM_PLANES_LAYER(bounce_layers, aovs) (bounce_layers)
-#define WF_FILM_PLANES_AOV(bounce_layers, aovs) ((aovs) ? 1u : 0u)
+#define WF_FILM_PLANES_AOV(bounce_layers, aovs) (((aovs) & WF_AOV_FIRST_HIT) ? 1u : 0u)
 // Whether a state may leave the buffer out (a partial render keeps neither layers nor AOVs).
 #define WF_FILM_OPTIONAL_PIXEL false
 #define WF_FILM_OPTIONAL_LAYER true
@@ -155,6 +156,8 @@ FilmReadout resolve(const FilmState& st) {
     out.mean = Image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f), {}};
     out.variance_of_mean = out.mean;
     out.min_samples = pixels ? *std::min_element(n.begin(), n.end()) : 0;
+    out.max_samples = pixels ? *std::max_element(n.begin(), n.end()) : 0;
+    out.mean_samples = pixels ? std::accumulate(n.begin(), n.end(), 0.0) / pixels : 0.0;
     for (size_t p = 0; p < pixels; ++p) {
         if (n[p] == 0) continue;
         const double count = n[p];
@@ -167,7 +170,11 @@ FilmReadout resolve(const FilmState& st) {
             out.variance_of_mean.rgb[3 * p + k] = static_cast<float>(sample_variance / count);
         }
     }
-    if (st.aovs && st.aov_albedo.size() == pixels) {
+    if (st.aovs & WF_AOV_SAMPLES) {
+        out.samples = Image{st.width, st.height, std::vector<float>(3 * pixels), {}};
+        for (size_t p = 0; p < 3 * pixels; ++p) out.samples->rgb[p] = static_cast<float>(n[p / 3]);
+    }
+    if ((st.aovs & WF_AOV_FIRST_HIT) && st.aov_albedo.size() == pixels) {
         auto mean_of = [&](const std::vector<cl_float4>& sums, auto value) {
             Image image{st.width, st.height, std::vector<float>(3 * pixels, 0.0f), {}};
             for (size_t p = 0; p < pixels; ++p)

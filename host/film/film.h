@@ -48,7 +48,10 @@ struct FilmReadout {
     // The first hit's mean base colour, shading normal and distance (the
     // distance in every channel), where the render keeps them (WF_AOV_*).
     std::optional<Image> albedo, normal, depth;
+    std::optional<Image> samples; // each pixel's count in every channel (WF_AOV_SAMPLES)
     uint32_t min_samples = 0;        // the fewest samples any pixel has
+    uint32_t max_samples = 0;        // the most: more than the fewest where adaptive sampling stopped pixels apart
+    double mean_samples = 0.0;
 };
 
 // What bounce layer `index` of `count` is called in files and in Python:

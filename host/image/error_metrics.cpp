@@ -39,14 +39,20 @@ ErrorMetrics compare_images(const Image& image, const Image& reference) {
     return e;
 }
 
-double estimate_relmse(const Image& mean, const Image& variance_of_mean) {
+double estimate_pixel_relmse(const Image& mean, const Image& variance_of_mean, size_t pixel) {
     double sum = 0.0;
-    const size_t n = mean.rgb.size();
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 3 * pixel; i < 3 * pixel + 3; ++i) {
         const double x = mean.rgb[i];
         sum += variance_of_mean.rgb[i] / (x * x + kRelativeEpsilon);
     }
-    return sum / n;
+    return sum / 3.0;
+}
+
+double estimate_relmse(const Image& mean, const Image& variance_of_mean) {
+    const size_t pixels = mean.rgb.size() / 3;
+    double sum = 0.0;
+    for (size_t p = 0; p < pixels; ++p) sum += estimate_pixel_relmse(mean, variance_of_mean, p);
+    return sum / pixels;
 }
 
 } // namespace wf

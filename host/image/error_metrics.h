@@ -26,5 +26,8 @@ ErrorMetrics compare_images(const Image& image, const Image& reference);
 float as_stored(float linear, const Quantisation& q);
 
 double estimate_relmse(const Image& mean, const Image& variance_of_mean);
+// The same estimate for one pixel, over its three channels: the image's is
+// the mean of its pixels'.
+double estimate_pixel_relmse(const Image& mean, const Image& variance_of_mean, size_t pixel);
 
 } // namespace wf

@@ -185,9 +185,30 @@ void PathIntegrator::trace_pixels(uint32_t first, const std::vector<uint32_t>& s
                                " do not fit a pool of " + std::to_string(pool_.size()));
     params_.first_pixel = first;
     params_.traced_pixels = count;
+    params_.pixel_list = 0;
     params_.pool_size = count;
     pool_.restore_samples_started(device_.queue, samples); // one pixel a slot: its samples are the slot's
     samples_held_ = std::accumulate(samples.begin(), samples.end(), uint64_t{0});
+    samples_counted_ = stats_.samples;
+}
+
+void PathIntegrator::trace_pixel_list(const std::vector<uint32_t>& pixels, uint32_t samples) {
+    const auto count = static_cast<uint32_t>(pixels.size());
+    if (count == 0 || count > params_.pixel_count)
+        throw std::logic_error("trace_pixel_list: " + std::to_string(count) + " pixels of " +
+                               std::to_string(params_.pixel_count));
+    pool_.set_pixel_list(device_.queue, pixels);
+    params_.first_pixel = 0;
+    params_.traced_pixels = count;
+    params_.pixel_list = 1;
+    params_.pool_size = std::min(count, pool_.size());
+    // Slot i owns entries i, i + pool, ...; each has `samples` done, and the
+    // slot takes a sample of each in turn, so it has started that many of each.
+    std::vector<uint32_t> started(params_.pool_size);
+    for (uint32_t slot = 0; slot < params_.pool_size; ++slot)
+        started[slot] = ((count - 1 - slot) / params_.pool_size + 1) * samples;
+    pool_.restore_samples_started(device_.queue, started);
+    samples_held_ = uint64_t{count} * samples;
     samples_counted_ = stats_.samples;
 }
 

@@ -155,6 +155,10 @@ public:
     // a unit of work of a render over several devices (render/renderer.h).
     // The film's sums of those pixels must be current on this device.
     void trace_pixels(uint32_t first, const std::vector<uint32_t>& samples);
+    // From the next round on, traces the listed pixels, each of which has
+    // `samples` samples: adaptive sampling's unfinished pixels
+    // (render/adaptive_sampling.h). The slots take them as they take a run.
+    void trace_pixel_list(const std::vector<uint32_t>& pixels, uint32_t samples);
 
     // Called after every read of the counters (a progress display).
     void on_progress(std::function<void(const RenderStats&)> f) { on_progress_ = std::move(f); }

@@ -20,6 +20,14 @@ PathPool::PathPool(const cl::Context& context, uint32_t pool_size) : size_(pool_
 #undef WF_ALLOCATE_FIELD
     queues = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_QUEUE_COUNT * static_cast<size_t>(pool_size));
     counters = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_COUNTER_COUNT);
+    pixel_list = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(cl_uint));
+}
+
+void PathPool::set_pixel_list(const cl::CommandQueue& queue, const std::vector<uint32_t>& pixels) {
+    const size_t bytes = sizeof(cl_uint) * pixels.size();
+    if (bytes > pixel_list.getInfo<CL_MEM_SIZE>())
+        pixel_list = cl::Buffer(queue.getInfo<CL_QUEUE_CONTEXT>(), CL_MEM_READ_ONLY, bytes);
+    queue.enqueueWriteBuffer(pixel_list, CL_TRUE, 0, bytes, pixels.data());
 }
 
 size_t PathPool::state_bytes_per_path() {

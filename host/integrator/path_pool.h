@@ -1,5 +1,6 @@
 // path_pool.h — the device memory of the wavefront: one buffer per path-state
-// field (include/wavefront/path_state.h), the queues, and their counters.
+// field (include/wavefront/path_state.h), the queues, their counters, and the
+// list of pixels the slots trace when they are not a run of the image.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,10 @@ public:
     // where the kernels keep it (kernels/path_view.h).
     void restore_samples_started(const cl::CommandQueue& queue, const std::vector<uint32_t>& started) const;
 
+    // The pixels the slots trace from the next round on, in the order slots
+    // take them (kernels/path_view.h): adaptive sampling's unfinished pixels.
+    void set_pixel_list(const cl::CommandQueue& queue, const std::vector<uint32_t>& pixels);
+
     const cl::Buffer& field(PathField f) const { return fields_[static_cast<size_t>(f)]; }
     const std::vector<cl::Buffer>& fields() const { return fields_; } // in WF_PATH_STATE order
 
@@ -40,6 +45,7 @@ public:
 
     cl::Buffer queues;   // WF_QUEUE_COUNT regions of size() slot indices
     cl::Buffer counters; // WF_COUNTER_COUNT uints: queue lengths, then statistics
+    cl::Buffer pixel_list; // set_pixel_list's; one unused entry until then
 
 private:
     uint32_t size_;

@@ -46,9 +46,9 @@ constexpr ChoiceNames kKernelKindNames = {"cpu", "gpu", "auto"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
 constexpr ChoiceNames kSamplerNames = {"independent", "sobol", nullptr};
-// --aov's first-hit layers by name (the bounce layers are the fourth choice, "bounces").
-constexpr std::array<std::pair<const char*, uint32_t>, 3> kFirstHitAovs = {
-    {{"albedo", WF_AOV_ALBEDO}, {"normal", WF_AOV_NORMAL}, {"depth", WF_AOV_DEPTH}}};
+// --aov's layers of one bit by name (the bounce layers are the other choice, "bounces").
+constexpr std::array<std::pair<const char*, uint32_t>, 4> kAovBits = {
+    {{"albedo", WF_AOV_ALBEDO}, {"normal", WF_AOV_NORMAL}, {"depth", WF_AOV_DEPTH}, {"samples", WF_AOV_SAMPLES}}};
 static_assert(WF_LIGHT_SAMPLING_BSDF == 0 && WF_LIGHT_SAMPLING_NEE == 1 && WF_LIGHT_SAMPLING_MIS == 2);
 static_assert(WF_HEMISPHERE_UNIFORM == 0 && WF_HEMISPHERE_COSINE == 1);
 static_assert(WF_SAMPLER_INDEPENDENT == 0 && WF_SAMPLER_SOBOL == 1);

@@ -12,7 +12,7 @@ cl_uint set_stage_args(cl::Kernel& kernel, const StageArgs& a) {
 #define WF_SET_FILM_ARG(type, name, extent, what) kernel.setArg(index++, a.film.name);
     WF_FILM_BUFFERS(WF_SET_FILM_ARG)
 #undef WF_SET_FILM_ARG
-    return set_kernel_args(kernel, index, a.params, a.camera, a.pool.queues, a.pool.counters);
+    return set_kernel_args(kernel, index, a.params, a.camera, a.pool.queues, a.pool.counters, a.pool.pixel_list);
 }
 
 } // namespace wf

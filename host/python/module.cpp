@@ -58,6 +58,13 @@ py::array_t<float> to_array(const Image& image) {
     return a;
 }
 
+// A layer that holds one value a pixel in each channel, as height x width.
+py::array_t<float> first_channel(const Image& image) {
+    py::array_t<float> a({size_t{image.height}, size_t{image.width}});
+    for (size_t p = 0; p < size_t(a.size()); ++p) a.mutable_data()[p] = image.rgb[3 * p];
+    return a;
+}
+
 RenderOptions parse_render(const std::string& scene, const py::dict& options) {
     const std::vector<std::string> words = render_words(scene, options);
     std::vector<const char*> argv;
@@ -163,11 +170,8 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
     result.variance = to_array(film.variance_of_mean);
     if (film.albedo) result.aovs["albedo"] = to_array(*film.albedo);
     if (film.normal) result.aovs["normal"] = to_array(*film.normal);
-    if (film.depth) { // one channel: the distance
-        py::array_t<float> depth({size_t{film.depth->height}, size_t{film.depth->width}});
-        for (size_t p = 0; p < size_t(depth.size()); ++p) depth.mutable_data()[p] = film.depth->rgb[3 * p];
-        result.aovs["depth"] = depth;
-    }
+    if (film.depth) result.aovs["depth"] = first_channel(*film.depth);      // the distance
+    if (film.samples) result.aovs["samples"] = first_channel(*film.samples); // each pixel's count
     for (size_t l = 0; l < film.bounce_layers.size(); ++l)
         result.bounce_layers[py::str(bounce_layer_name(l, film.bounce_layers.size()))] = to_array(film.bounce_layers[l]);
     // A render stopped by the callback's exception or by Ctrl-C keeps what it
@@ -327,7 +331,8 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("bounce_layers", &PyResult::bounce_layers, "with aov='bounces': name -> image")
         .def_readonly("aovs", &PyResult::aovs,
                       "with aov=['albedo', 'normal', 'depth']: the first hit's mean base colour and shading normal "
-                      "(height x width x 3) and distance (height x width); 0 where the camera ray escapes")
+                      "(height x width x 3) and distance (height x width); 0 where the camera ray escapes; with "
+                      "aov='samples', the samples each pixel took (height x width)")
         .def_readonly("checkpoints", &PyResult::checkpoints)
         .def_property_readonly("stats", [](const PyResult& r) { return r.summary.stats; })
         .def_property_readonly("spp", [](const PyResult& r) { return r.summary.spp; })

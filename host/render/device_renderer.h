@@ -53,6 +53,11 @@ public:
 
     // Continues every pixel it traces up to `spp` samples, unless settings.stop ends the round early.
     void render_to(uint32_t spp) { integrator_->render_to(spp); }
+    // Continues the listed pixels, each of which has `from` samples, up to `spp` (adaptive sampling).
+    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp) {
+        integrator_->trace_pixel_list(pixels, from);
+        integrator_->render_to(spp);
+    }
     // Goes on from a stopped render's film (host/film/partial_render.h) over
     // the whole image, when its sample counts are those this pool leaves;
     // false, and nothing changed, when they are not.

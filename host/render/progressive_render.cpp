@@ -1,12 +1,18 @@
 // progressive_render.cpp — round sizes: doubling by default; with
 // --report-every, as many samples as the measured rate fits in that time; and
-// never more than the time budget has left. Rounds change nothing in the image
+// never more than the time budget has left. The rate is per sample, so that a
+// round of adaptive sampling's fewer pixels is expected to take less time. Rounds change nothing in the image
 // (wavefront_integrator.h), only when the film is looked at.
 #include "render/progressive_render.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <vector>
+
+#include "base/errors.h"
+#include "render/adaptive_sampling.h"
 
 namespace wf {
 namespace {
@@ -33,30 +39,47 @@ uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_
 
 FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
                                  const std::function<void(const Checkpoint&)>& on_checkpoint) {
+    if (options.adaptive && !renderer.renders_in_place())
+        throw InputError("--adaptive samples the image on one device, and goes on only from a partial render of "
+                         "the same pool size: not over several devices or ranks");
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     FilmReadout film;
     uint32_t done = options.start_spp;
+    // Adaptive sampling's pixels that go on, once it has stopped any (from
+    // kMinSppForTargetError on); until then every pixel takes every round.
+    std::optional<std::vector<uint32_t>> going_on;
+    const ImageSize size = renderer.size();
+    uint32_t sampling = size.width * size.height;
     for (;;) {
-        const uint32_t rendered = done - options.start_spp; // by this run, whose time stats() has
-        const double seconds_per_spp = rendered ? renderer.stats().seconds / rendered : 0.0;
+        const RenderStats stats = renderer.stats(); // this run's: a resumed render's earlier samples are not in it
+        const double seconds_per_spp = stats.samples ? stats.seconds / double(stats.samples) * sampling : 0.0;
         const uint32_t next = next_round(options, done, seconds_per_spp, elapsed());
         if (next <= done) break;
-        renderer.render_to(next);
+        if (going_on) renderer.render_pixels_to(*going_on, done, next);
+        else renderer.render_to(next);
         film = renderer.read();
         const bool stopped = stop_requested(options.stop);
-        done = stopped ? film.min_samples : next;
+        // Stopped within a round, the pixels adaptive sampling continued have between `done` and `next`.
+        done = stopped ? (going_on ? done : film.min_samples) : next;
+        if (options.adaptive && !stopped && done >= kMinSppForTargetError) {
+            if (!going_on) going_on = every_pixel(size.width, size.height);
+            going_on = unfinished_pixels(film.mean, film.variance_of_mean, options.target_relmse, *going_on);
+            sampling = static_cast<uint32_t>(going_on->size());
+        }
 
         Checkpoint c;
         c.seconds = elapsed();
         c.spp = done;
+        c.pixels_sampling = sampling;
         if (options.reference) c.error = compare_images(film.mean, *options.reference);
         if (done >= 2) c.relmse_estimate = estimate_relmse(film.mean, film.variance_of_mean);
         on_checkpoint(c);
 
         const bool time_is_up = options.time_budget > 0.0 && c.seconds >= options.time_budget;
+        // Adaptive sampling ends when every pixel has stopped on its own error, not on the image's.
         const bool accurate = options.target_relmse > 0.0 && done >= kMinSppForTargetError &&
-                              *c.relmse_estimate < options.target_relmse;
+                              (options.adaptive ? sampling == 0 : *c.relmse_estimate < options.target_relmse);
         if (time_is_up || accurate || stopped) break;
     }
     return film;

@@ -2,7 +2,8 @@
 // how long it has run, how many samples per pixel it has, and how wrong the
 // image still is (against a reference if given, and always estimated from the
 // render's own variance). It stops at the sample count, the time budget or
-// the target error, whichever comes first, or when `stop` is set.
+// the target error, whichever comes first, or when `stop` is set. With
+// adaptive sampling, pixels stop one by one and the rounds go on with the rest.
 #pragma once
 
 #include <functional>
@@ -16,13 +17,15 @@ namespace wf {
 
 struct Checkpoint {
     double seconds = 0.0; // wall time since the first round started, readbacks included
-    uint32_t spp = 0;
+    uint32_t spp = 0;                      // the most a pixel has: every pixel's but adaptive sampling's
+    uint32_t pixels_sampling = 0;          // pixels the next round continues (all but those adaptive sampling stopped)
     std::optional<ErrorMetrics> error;     // against the reference, when there is one
     std::optional<double> relmse_estimate; // from 2 spp on: one sample has no variance
 };
 
 // Renders until a stop condition holds, calling `on_checkpoint` after every
-// round. Returns the final film.
+// round. Returns the final film. Throws InputError when adaptive sampling is
+// asked of a render that does not run in place (Renderer::renders_in_place).
 FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
                                  const std::function<void(const Checkpoint&)>& on_checkpoint);
 

@@ -35,7 +35,12 @@ void print_report(std::ostream& out, const RenderSummary& s) {
             << " units, " << std::setprecision(2) << per_second(share.samples, share.busy_seconds) * 1e-6
             << " M samples/s busy, " << std::setprecision(3) << share.transfer_seconds << " s moving sums\n";
     }
-    out << "image      " << s.width << " x " << s.height << ", " << s.spp << " spp";
+    out << "image      " << s.width << " x " << s.height << ", " << s.spp;
+    if (s.most_spp > s.spp)
+        out << " to " << s.most_spp << " spp, " << std::setprecision(1) << s.mean_spp << " on average"
+            << std::setprecision(3);
+    else
+        out << " spp";
     if (s.resumed_from_spp) out << " (resumed from " << s.resumed_from_spp << ")";
     out << (s.output.empty() ? "" : " -> " + s.output) << "\n"; // none where no file was written (Python)
     out << "times      load " << s.times.load << " s, BVH build " << s.times.bvh_build << " s (" << s.bvh_nodes

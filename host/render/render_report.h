@@ -38,7 +38,9 @@ struct RenderSummary {
     size_t bvh_nodes = 0;
     int bvh_depth = 0;
     std::string device;
-    uint32_t width = 0, height = 0, spp = 0;
+    uint32_t width = 0, height = 0, spp = 0; // spp: the fewest a pixel has
+    uint32_t most_spp = 0;  // the most a pixel has: more than spp where --adaptive stopped pixels apart
+    double mean_spp = 0.0;
     uint32_t resumed_from_spp = 0; // the samples per pixel of the partial render it went on from; 0: none
     size_t device_bytes = 0;
     QueuePush queue_push = QueuePush::Group;

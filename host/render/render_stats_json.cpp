@@ -27,6 +27,8 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["width"] = s.width;
     j["height"] = s.height;
     j["spp"] = s.spp;
+    j["most_spp"] = s.most_spp;
+    j["mean_spp"] = s.mean_spp;
     j["resumed_from_spp"] = s.resumed_from_spp;
     j["integrator"] = integrator_name(st.integrator);
     j["schedule"] = st.integrator == Integrator::Megakernel ? "none" : schedule_name(st.schedule);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <stdexcept>
 #include <thread>
 
 #include "base/errors.h"
@@ -56,6 +57,11 @@ void Renderer::render_to(uint32_t spp) {
     std::lock_guard<std::mutex> lock(progress_mutex_);
     in_round_ = false;
     seconds_ += since(round_start_);
+}
+
+void Renderer::render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp) {
+    if (by_units_) throw std::logic_error("render_pixels_to: the image is rendered by units of work");
+    devices_[0]->render_pixels_to(pixels, from, spp);
 }
 
 void Renderer::render_units(uint32_t spp) {

@@ -33,6 +33,13 @@ public:
 
     // Continues every pixel up to `spp` samples, unless settings.stop ends the round early.
     void render_to(uint32_t spp);
+    // Continues the listed pixels, each of which has `from` samples, up to
+    // `spp` (adaptive sampling, adaptive_sampling.h). Only where one device
+    // renders the image in place (renders_in_place()).
+    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp);
+    // One device, the whole image on it: not units of work over several
+    // devices, nor a partial render its pool did not leave.
+    bool renders_in_place() const { return !by_units_; }
     // Goes on from a stopped render's film (host/film/partial_render.h), which
     // must have this image's size; returns the fewest samples a pixel has.
     // Throws InputError otherwise.
@@ -41,6 +48,7 @@ public:
     // after each unit of another rank's; with what every worker has done.
     void on_progress(std::function<void(const RenderStats&)> f);
     FilmReadout read() const;
+    ImageSize size() const { return size_; }
     FilmState film_state() const;
     // Every worker's statistics together; the time is the render's wall time.
     RenderStats stats() const;

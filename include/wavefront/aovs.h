@@ -1,4 +1,4 @@
-/* aovs.h — the bits of RenderParams.aovs (--aov). */
+/* aovs.h — the bits of RenderParams.aovs (--aov), and of the film's layers. */
 #ifndef WAVEFRONT_AOVS_H
 #define WAVEFRONT_AOVS_H
 
@@ -8,5 +8,9 @@
 #define WF_AOV_ALBEDO 1u
 #define WF_AOV_NORMAL 2u
 #define WF_AOV_DEPTH 4u
+#define WF_AOV_FIRST_HIT (WF_AOV_ALBEDO | WF_AOV_NORMAL | WF_AOV_DEPTH)
+/* How many samples each pixel took (adaptive sampling's): the film counts
+ * them anyway, so this layer asks nothing of the kernels. */
+#define WF_AOV_SAMPLES 8u
 
 #endif /* WAVEFRONT_AOVS_H */

@@ -26,7 +26,7 @@
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \
     X(Camera, width) X(Camera, forward) X(Camera, height)                                         \
     X(RenderParams, pixel_count) X(RenderParams, first_pixel) X(RenderParams, traced_pixels)     \
-    X(RenderParams, pool_size) X(RenderParams, spp)                                              \
+    X(RenderParams, pixel_list) X(RenderParams, pool_size) X(RenderParams, spp)                   \
     X(RenderParams, max_depth) X(RenderParams, seed) X(RenderParams, roulette_depth)              \
     X(RenderParams, roulette_cap)                                                                 \
     X(RenderParams, light_count) X(RenderParams, light_sampling) X(RenderParams, hemisphere)           \

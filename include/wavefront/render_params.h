@@ -12,7 +12,8 @@
 typedef struct RenderParams {
     uint32_t pixel_count;    /* of the image */
     uint32_t first_pixel;    /* the pool traces pixels [first_pixel, first_pixel + traced_pixels): */
-    uint32_t traced_pixels;  /* the whole image, or one device's unit of work (host/render/) */
+    uint32_t traced_pixels;  /* the whole image, or one device's unit of work (host/render/); */
+    uint32_t pixel_list;     /* or, when 1, the pixels the list holds from entry first_pixel on (adaptive sampling's) */
     uint32_t pool_size;      /* path slots; slot i owns pixels first + i, first + i + pool, ... */
     uint32_t spp;            /* samples per pixel to reach in the current round */
     uint32_t max_depth;      /* bounces; WF_UNLIMITED_DEPTH = ended by roulette alone */

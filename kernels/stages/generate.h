@@ -16,7 +16,7 @@
 WF_INLINE bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
                                 uint slot) {
     const uint work = path_samples_started(path, slot);
-    const PathSample next = nth_sample(params, slot, work);
+    const PathSample next = nth_sample(path, params, slot, work);
     if (next.sample >= params->spp) return false;
     const uint pixel = next.pixel;
 

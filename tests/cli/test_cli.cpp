@@ -275,6 +275,28 @@ TEST_F(Cli, AovsAreLayersOfTheExr) {
     expect_rejected(base + "--aov albedo,shadows -o " + path("a.exr"), "--aov");
 }
 
+// --adaptive: each pixel's count as the layer samples.Y, and the report's
+// fewest, most and mean; without a target there is nothing to stop on.
+TEST_F(Cli, AdaptiveSamplingKeepsEachPixelsCount) {
+    const std::string base = "render " + kCornell + " --width 24 --spp 64 --adaptive ";
+    const test::ProcessResult r = run(base + "--target-error 0.03 --aov samples -o " + path("adaptive.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const ChannelImage image = read_channels(path("adaptive.exr"));
+    const auto channel = std::find(image.channel_names.begin(), image.channel_names.end(), "samples.Y");
+    ASSERT_NE(channel, image.channel_names.end());
+    const size_t first = channel - image.channel_names.begin(), stride = image.channel_names.size();
+    float fewest = 1e9f, most = 0.0f;
+    for (size_t p = first; p < image.pixels.size(); p += stride) {
+        fewest = std::min(fewest, image.pixels[p]);
+        most = std::max(most, image.pixels[p]);
+    }
+    EXPECT_EQ(fewest, 16.0f);
+    EXPECT_EQ(most, 64.0f);
+    EXPECT_NE(r.out.find(", 16 to 64 spp, "), std::string::npos) << r.out;
+    expect_rejected(base + "-o " + path("a.exr"), "--adaptive stops each pixel at --target-error");
+    EXPECT_FALSE(fs::exists(path("a.exr")));
+}
+
 TEST_F(Cli, RendersPngAndExrWithMetadata) {
     const test::ProcessResult png = run("render " + kCornell + " --width 32 --height 32 --spp 2 -o " + path("cornell.png"));
     ASSERT_EQ(png.exit_code, 0) << png.err;

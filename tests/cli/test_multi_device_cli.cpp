@@ -61,5 +61,17 @@ TEST_F(MultiDeviceCli, ABadListIsRefusedByName) {
     EXPECT_FALSE(fs::exists(path("twice.exr")) || fs::exists(path("none.exr")) || fs::exists(path("empty.exr")));
 }
 
+// Adaptive sampling continues a list of pixels on one device; units of work
+// over several are runs of pixels. Refused before any round, by name.
+TEST_F(MultiDeviceCli, AdaptiveSamplingOverSeveralDevicesIsRefused) {
+    const test::ProcessResult r =
+        test::run_wavefront("render " + kCornell + " --width 32 --adaptive --target-error 0.01 --device all -o " +
+                                path("adaptive.exr"),
+                            dir_.string(), kTwoDevices);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--adaptive samples the image on one device"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("adaptive.exr")));
+}
+
 } // namespace
 } // namespace wf
