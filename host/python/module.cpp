@@ -315,6 +315,7 @@ PYBIND11_MODULE(wavefront, m) {
         .def_readonly("spp", &Checkpoint::spp)
         .def_property_readonly("relmse", [](const Checkpoint& c) { return c.error ? std::optional<double>(c.error->relmse) : std::nullopt; })
         .def_readonly("relmse_estimate", &Checkpoint::relmse_estimate)
+        .def_readonly("pixels_sampling", &Checkpoint::pixels_sampling, "pixels the next round continues")
         .def("__repr__", [](const Checkpoint& c) {
             std::ostringstream text;
             text << "<wavefront.Checkpoint " << c.spp << " spp at " << c.seconds << " s";
