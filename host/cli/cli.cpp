@@ -460,14 +460,6 @@ void check_config_values(const std::string& path, const std::vector<ConfigFlag>&
 
 } // namespace
 
-std::string aov_names(const RenderSettings& s) {
-    std::string names;
-    for (const auto& [name, bit] : kFirstHitAovs)
-        if (s.aovs & bit) names += (names.empty() ? "" : ",") + std::string(name);
-    if (s.bounce_layers) names += names.empty() ? "bounces" : ",bounces";
-    return names.empty() ? "none" : names;
-}
-
 std::vector<FlagInfo> render_flags() {
     CommandLine cl;
     RenderFlags flags;

@@ -9,11 +9,12 @@
 #include <thread>
 
 #include "base/file_fingerprint.h"
-#include "cli/exit_status.h"
-#include "cli/interrupt.h"
-#include "cli/render_command.h"
 #include "cluster/unit_messages.h"
 #include "render/device_renderer.h"
+#include "session/exit_status.h"
+#include "session/interrupt.h"
+#include "session/render_scene.h"
+#include "session/run_render.h"
 
 namespace wf {
 namespace {

@@ -2,11 +2,11 @@
 // plots. render() takes every flag of `wavefront render` as a keyword
 // (--pool-size as pool_size=...), parsed by the command line's own parser, so
 // values are checked and errors worded as there; it renders through the
-// command's run_render() and returns the image, the bounce layers and the
-// statistics as NumPy arrays and plain objects. Errors arrive as
-// wavefront.InputError (a ValueError: the input is at fault, exit status 2 on
-// the command line) or wavefront.DeviceError (a RuntimeError: the machine),
-// with the command line's one-line message.
+// render session's run_render(), as the command line does, and returns the
+// image, the bounce layers and the statistics as NumPy arrays and plain
+// objects. Errors arrive as wavefront.InputError (a ValueError: the input is
+// at fault, exit status 2 on the command line) or wavefront.DeviceError (a
+// RuntimeError: the machine), with the command line's one-line message.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -24,12 +24,12 @@
 
 #include "base/errors.h"
 #include "cli/cli.h"
-#include "cli/exit_status.h"
-#include "cli/render_command.h"
 #include "device/opencl_device.h"
 #include "gltf/gltf_loader.h"
 #include "image/image_io.h"
 #include "python/render_keywords.h"
+#include "session/exit_status.h"
+#include "session/run_render.h"
 
 namespace py = pybind11;
 

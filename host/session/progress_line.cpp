@@ -1,6 +1,6 @@
 // progress_line.cpp — rates are over the render's own time (stats.seconds
 // covers finished rounds only), so the line uses its own clock.
-#include "cli/progress_line.h"
+#include "session/progress_line.h"
 
 #include <algorithm>
 #include <iomanip>

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/progress_line.h"
+#include "session/progress_line.h"
 #include "support/test_support.h"
 
 namespace wf {
