@@ -412,7 +412,7 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
         throw InputError("render: --sort-materials sorts the wavefront's global queue; --schedule group has none");
     // A time budget or a target error alone leaves the sample count open.
     const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
-    o.progress.max_spp = !f.spp_flag->count() && open_ended ? 0 : s.spp;
+    if (!f.spp_flag->count() && open_ended) s.spp = 0;
 }
 
 void declare_cache(CLI::App& cache, CommandLine& cl) {

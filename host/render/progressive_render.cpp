@@ -16,8 +16,8 @@ constexpr uint32_t kUnlimitedSpp = 1u << 24;
 constexpr uint32_t kMinSppForTargetError = 16;
 
 // The sample count the next round should reach, or `done` when none fits.
-uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_spp, double elapsed) {
-    const uint32_t limit = o.max_spp ? o.max_spp : kUnlimitedSpp;
+uint32_t next_round(const ProgressOptions& o, uint32_t spp, uint32_t done, double seconds_per_spp, double elapsed) {
+    const uint32_t limit = spp ? spp : kUnlimitedSpp;
     uint32_t next = done == 0 ? 1u : 2u * done;
     if (o.report_every > 0.0 && seconds_per_spp > 0.0)
         next = done + std::max(1u, static_cast<uint32_t>(std::min(o.report_every / seconds_per_spp, double(limit))));
@@ -31,7 +31,7 @@ uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_
 
 } // namespace
 
-FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
+FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const ProgressOptions& options,
                                  const std::function<void(const Checkpoint&)>& on_checkpoint) {
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -40,7 +40,7 @@ FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& opti
     for (;;) {
         const uint32_t rendered = done - options.start_spp; // by this run, whose time stats() has
         const double seconds_per_spp = rendered ? renderer.stats().seconds / rendered : 0.0;
-        const uint32_t next = next_round(options, done, seconds_per_spp, elapsed());
+        const uint32_t next = next_round(options, spp, done, seconds_per_spp, elapsed());
         if (next <= done) break;
         renderer.render_to(next);
         film = renderer.read();

@@ -28,8 +28,8 @@ struct RenderOptions {
     float environment_rotate = 0.0f; // degrees about +y
     float environment_scale = 1.0f;
     std::optional<float> environment_uniform; // a constant environment of this radiance instead; 0: none at all
-    RenderSettings settings;
-    ProgressOptions progress; // its max_spp is settings.spp, or 0 when only time or error bounds the render
+    RenderSettings settings;   // its spp 0 when only time or error bounds the render (cli.cpp)
+    ProgressOptions progress;
     std::string reference;    // an image to report the error against
     std::string report_csv;   // where to write the checkpoints as CSV
     std::string stats_json;   // where to write the render's statistics (render_stats_json.h)

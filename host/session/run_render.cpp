@@ -90,8 +90,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         resumed = read_partial_render(options.resume);
         check_partial_options(*resumed, options.resume, resume_checks(shaping));
         const uint32_t held = resolve(resumed->film).min_samples;
-        if (options.progress.max_spp && options.progress.max_spp <= held)
-            throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
+        if (options.settings.spp && options.settings.spp <= held)
+            throw InputError("--spp " + std::to_string(options.settings.spp) + ": " + options.resume +
                              " already holds " + std::to_string(held) + " spp; ask for more to go on");
     }
     if (layers && hooks.write_image && !holds_float_radiance(options.output))
@@ -139,9 +139,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     metadata.seed = options.settings.seed;
     metadata.scene = canonical_path(options.scene);
     metadata.options = shaping;
-    const ProgressGoal goal{uint64_t{size.width} * size.height, progress.start_spp, progress.max_spp,
-                            progress.time_budget};
-    ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, goal);
+    ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, uint64_t{size.width} * size.height,
+                               options.settings.spp, progress);
     renderer.on_progress([&](const RenderStats& s) {
         if (!options.quiet) progress_line.update(s);
         if (hooks.on_progress) hooks.on_progress(s);
@@ -157,7 +156,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     };
     auto last_checkpoint = std::chrono::steady_clock::now();
     CheckpointLog checkpoints(out, options.report_csv);
-    const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
+    const FilmReadout film = render_progressively(renderer, options.settings.spp, progress, [&](const Checkpoint& c) {
         progress_line.clear(); // stdout and stderr may share the terminal
         checkpoints.add(c);
         if (hooks.on_checkpoint) hooks.on_checkpoint(c);
