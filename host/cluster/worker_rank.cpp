@@ -24,7 +24,7 @@ std::vector<unsigned char> unit_reply(DeviceRenderer& device, const UnitRequest&
                                       size_t sums_size, FilmState& image) {
     const auto start = std::chrono::steady_clock::now();
     if (!request.held) unpack_pixels(sums, sums_size, request.first, request.count, image);
-    device.render_unit(request.first, request.count, request.spp, image, request.held != 0);
+    device.render_unit(request.first, request.count, request.round_spp, image, request.held != 0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const UnitCounts counts = to_wire(device.counts(), device.transfer_seconds(), seconds);
     std::vector<unsigned char> reply(sizeof(UnitReplyStatus) + sizeof counts);

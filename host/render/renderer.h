@@ -31,8 +31,8 @@ public:
     // and the first round: from then on every round goes by units.
     void add_workers(std::vector<std::unique_ptr<UnitWorker>> workers);
 
-    // Continues every pixel up to `spp` samples, unless settings.stop ends the round early.
-    void render_to(uint32_t spp);
+    // A round: continues every pixel up to `round_spp` samples, unless settings.stop ends it early.
+    void render_to(uint32_t round_spp);
     // Goes on from a stopped render's film (host/film/partial_render.h), which
     // must have this image's size; returns the fewest samples a pixel has.
     // Throws InputError otherwise.
@@ -50,7 +50,7 @@ public:
 
 private:
     // Units of work over the workers, each in a thread of its own when there are several.
-    void render_units(uint32_t spp);
+    void render_units(uint32_t round_spp);
     // Under progress_mutex_: worker w's counts as they now are, passed on summed.
     void report_progress(size_t w, const RenderStats& counts);
 
