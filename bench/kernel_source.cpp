@@ -17,7 +17,7 @@
 #include <string>
 
 #include "base/errors.h"
-#include "cli/exit_status.h"
+#include "session/exit_status.h"
 #include "device/kernel_sources.h"
 #include "device/scene_features.h"
 #include "gltf/gltf_loader.h"

@@ -35,7 +35,7 @@
 #include "device/device_scene.h"
 #include "embree_tracer.h"
 #include "base/errors.h"
-#include "cli/exit_status.h"
+#include "session/exit_status.h"
 #include "gltf/gltf_loader.h"
 #include "hit_agreement.h"
 #include "device/layout_check.h"

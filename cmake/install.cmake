@@ -34,9 +34,10 @@ endif()
 install(FILES scripts/wavefront-completion.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME wavefront)
 
-# `import wavefront`: in the wheel's root when pip builds it (scikit-build-core
-# sets SKBUILD), else in the prefix's site-packages for the interpreter it was
-# built for.
+# `import wavefront` and `python -m wavefront`: the package wavefront/ (the
+# module as its __init__, and __main__.py), in the wheel's root when pip
+# builds it (scikit-build-core sets SKBUILD), else in the prefix's
+# site-packages for the interpreter it was built for.
 if(TARGET wavefront_python)
   if(SKBUILD)
     set(WF_PYTHON_INSTALL_DIR .)
@@ -44,5 +45,6 @@ if(TARGET wavefront_python)
     set(WF_PYTHON_INSTALL_DIR
         ${CMAKE_INSTALL_LIBDIR}/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/site-packages)
   endif()
-  install(TARGETS wavefront_python LIBRARY DESTINATION ${WF_PYTHON_INSTALL_DIR} COMPONENT python)
+  install(TARGETS wavefront_python LIBRARY DESTINATION ${WF_PYTHON_INSTALL_DIR}/wavefront COMPONENT python)
+  install(FILES host/python/__main__.py DESTINATION ${WF_PYTHON_INSTALL_DIR}/wavefront COMPONENT python)
 endif()

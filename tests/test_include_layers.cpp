@@ -21,9 +21,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // From the glTF file to the image: each layer may use those before it.
-constexpr std::array<const char*, 13> kHostLayers = {"base",   "image",      "scene",  "gltf", "bvh",
-                                                     "device", "film",       "integrator", "render", "cli",
-                                                     "cluster", "app", "python"};
+// session/ (a render from start to end) is what the front ends stand on:
+// cluster/ (a render over MPI ranks), cli/ (the flags and the dispatch, which
+// hands a render under mpirun to cluster/), app/ (main) and python/ (whose
+// keywords are the command line's flags).
+constexpr std::array<const char*, 14> kHostLayers = {"base",   "image",   "scene",      "gltf",   "bvh",
+                                                     "device", "film",    "integrator", "render", "session",
+                                                     "cluster", "cli",    "app",        "python"};
 constexpr const char* kFirstOpenClLayer = "device";
 
 int layer_rank(const std::string& name) {

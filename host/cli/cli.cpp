@@ -421,7 +421,7 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
         throw InputError("render: --adaptive stops each pixel at --target-error; give one");
     // A time budget or a target error alone leaves the sample count open.
     const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
-    o.progress.max_spp = !f.spp_flag->count() && open_ended ? 0 : s.spp;
+    if (!f.spp_flag->count() && open_ended) s.spp = 0;
 }
 
 void declare_cache(CLI::App& cache, CommandLine& cl) {
@@ -468,14 +468,6 @@ void check_config_values(const std::string& path, const std::vector<ConfigFlag>&
 }
 
 } // namespace
-
-std::string aov_names(const RenderSettings& s) {
-    std::string names;
-    for (const auto& [name, bit] : kAovBits)
-        if (s.aovs & bit) names += (names.empty() ? "" : ",") + std::string(name);
-    if (s.bounce_layers) names += names.empty() ? "bounces" : ",bounces";
-    return names.empty() ? "none" : names;
-}
 
 std::vector<FlagInfo> render_flags() {
     CommandLine cl;

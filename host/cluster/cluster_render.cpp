@@ -6,12 +6,12 @@
 #include <iostream>
 
 #include "base/file_fingerprint.h"
-#include "cli/exit_status.h"
-#include "cli/interrupt.h"
-#include "cli/render_command.h"
 #include "cluster/mpi_world.h"
 #include "cluster/rank_zero.h"
 #include "cluster/worker_rank.h"
+#include "session/exit_status.h"
+#include "session/interrupt.h"
+#include "session/run_render.h"
 
 namespace wf {
 

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <iosfwd>
 
-#include "cli/cli.h"
+#include "session/render_options.h"
 
 namespace wf {
 

@@ -15,10 +15,10 @@ namespace wf {
 RemoteDevice::RemoteDevice(int rank, int index, std::string name, uint32_t pool, const std::atomic<int>* stop)
     : rank_(rank), index_(index), name_(std::move(name)), pool_(pool), stop_(stop) {}
 
-void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) {
+void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t round_spp, FilmState& image, bool held) {
     const auto start = std::chrono::steady_clock::now();
     const std::string what = "a unit of work for " + name();
-    const UnitRequest request{UnitCommand::Render, first, count, spp, held ? 1u : 0u};
+    const UnitRequest request{UnitCommand::Render, first, count, round_spp, held ? 1u : 0u};
     std::vector<unsigned char> message(sizeof request);
     std::memcpy(message.data(), &request, sizeof request);
     if (!held) {
@@ -55,7 +55,7 @@ void RemoteDevice::render_unit(uint32_t first, uint32_t count, uint32_t spp, Fil
     // by mpirun's signal to every rank, which may reach this rank a moment
     // later; alone, it is a failure of that rank.
     const bool short_unit = std::any_of(image.samples.begin() + first, image.samples.begin() + first + count,
-                                        [&](uint32_t n) { return n < spp; });
+                                        [&](uint32_t n) { return n < round_spp; });
     for (int wait = 0; short_unit && !stop_requested(stop_) && wait < 500; ++wait)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     if (short_unit && !stop_requested(stop_))

@@ -16,7 +16,7 @@ public:
     // rank's stop flag.
     RemoteDevice(int rank, int index, std::string name, uint32_t pool, const std::atomic<int>* stop);
 
-    void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) override;
+    void render_unit(uint32_t first, uint32_t count, uint32_t round_spp, FilmState& image, bool held) override;
     std::string name() const override { return "rank " + std::to_string(rank_) + ": " + name_; }
     uint32_t most_pixels() const override { return pool_; }
     RenderStats counts() const override { return counts_; }

@@ -24,7 +24,7 @@ enum class UnitCommand : uint32_t { Render = 1, End = 2 };
 
 struct UnitRequest {
     UnitCommand command = UnitCommand::End;
-    uint32_t first = 0, count = 0, spp = 0;
+    uint32_t first = 0, count = 0, round_spp = 0;
     uint32_t held = 0; // 1: the device's film has the unit's sums, none follow
 };
 

@@ -9,11 +9,12 @@
 #include <thread>
 
 #include "base/file_fingerprint.h"
-#include "cli/exit_status.h"
-#include "cli/interrupt.h"
-#include "cli/render_command.h"
 #include "cluster/unit_messages.h"
 #include "render/device_renderer.h"
+#include "session/exit_status.h"
+#include "session/interrupt.h"
+#include "session/render_scene.h"
+#include "session/run_render.h"
 
 namespace wf {
 namespace {
@@ -23,7 +24,7 @@ std::vector<unsigned char> unit_reply(DeviceRenderer& device, const UnitRequest&
                                       size_t sums_size, FilmState& image) {
     const auto start = std::chrono::steady_clock::now();
     if (!request.held) unpack_pixels(sums, sums_size, request.first, request.count, image);
-    device.render_unit(request.first, request.count, request.spp, image, request.held != 0);
+    device.render_unit(request.first, request.count, request.round_spp, image, request.held != 0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const UnitCounts counts = to_wire(device.counts(), device.transfer_seconds(), seconds);
     std::vector<unsigned char> reply(sizeof(UnitReplyStatus) + sizeof counts);

@@ -4,7 +4,7 @@
 // the work. It writes no file and prints nothing: rank 0 does both.
 #pragma once
 
-#include "cli/cli.h"
+#include "session/render_options.h"
 
 namespace wf {
 

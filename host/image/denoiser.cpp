@@ -54,10 +54,15 @@ std::vector<std::string> oidn_candidate_paths() {
     if (!found) paths.push_back(WF_OIDN_VENV "/lib/python3*/site-packages/pyoidn/oidn/lib/" + std::string(kOidnLibraryName));
 #endif
     // Beside the code running this: the site-packages `import wavefront` was
-    // installed into, where `pip install pyoidn` puts the wheel too.
+    // installed into, where `pip install pyoidn` puts the wheel too. The
+    // module is its package's __init__, in site-packages/wavefront/.
     Dl_info self{};
-    if (dladdr(reinterpret_cast<void*>(&oidn_candidate_paths), &self) && self.dli_fname)
-        paths.push_back((fs::path(self.dli_fname).parent_path() / "pyoidn" / "oidn" / "lib" / kOidnLibraryName).string());
+    if (dladdr(reinterpret_cast<void*>(&oidn_candidate_paths), &self) && self.dli_fname) {
+        const fs::path code(self.dli_fname);
+        const bool package = code.filename().string().rfind("__init__.", 0) == 0;
+        const fs::path beside = package ? code.parent_path().parent_path() : code.parent_path();
+        paths.push_back((beside / "pyoidn" / "oidn" / "lib" / kOidnLibraryName).string());
+    }
     paths.push_back(kOidnLibraryName); // the loader's search path
     return paths;
 }

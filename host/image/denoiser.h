@@ -6,8 +6,8 @@
 // build/oidn-venv. Where it is looked for, in order:
 //   1. $WF_OIDN_LIBRARY, a path to libOpenImageDenoise.so.2, alone when set;
 //   2. the build's own build/oidn-venv (the path CMake bakes in, WF_OIDN_VENV);
-//   3. pyoidn beside the module or program running this: the site-packages
-//      that `pip install .[denoise]` fills;
+//   3. pyoidn beside the program running this, or beside the module's
+//      package: the site-packages that `pip install .[denoise]` fills;
 //   4. libOpenImageDenoise.so.2 on the loader's default search path.
 #pragma once
 

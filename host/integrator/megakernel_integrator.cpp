@@ -10,9 +10,9 @@ MegakernelIntegrator::MegakernelIntegrator(const OpenClDevice& device, const cl:
                                           const RenderSettings& settings)
     : PathIntegrator(device, scene, camera, settings), kernel_(program, "megakernel") {}
 
-void MegakernelIntegrator::render_to(uint32_t spp) {
+void MegakernelIntegrator::render_to(uint32_t round_spp) {
     const auto start = std::chrono::steady_clock::now();
-    params_.spp = spp;
+    params_.spp = round_spp;
     set_stage_args(kernel_, stage_args());
     run_whole_paths(STAGE_MEGAKERNEL, kernel_);
     device_.queue.finish();

@@ -14,7 +14,7 @@ public:
     MegakernelIntegrator(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
                          const Camera& camera, const RenderSettings& settings);
 
-    void render_to(uint32_t spp) override;
+    void render_to(uint32_t round_spp) override;
 
 private:
     cl::Kernel kernel_;

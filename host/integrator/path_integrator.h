@@ -138,9 +138,9 @@ class PathIntegrator {
 public:
     virtual ~PathIntegrator() = default;
 
-    // Continues every pixel up to `spp` samples (a round), unless settings.stop
-    // ends it early.
-    virtual void render_to(uint32_t spp) = 0;
+    // Continues every pixel up to `round_spp` samples (a round), unless
+    // settings.stop ends it early.
+    virtual void render_to(uint32_t round_spp) = 0;
 
     const RenderStats& stats() const { return stats_; }
     const Film& film() const { return film_; }

@@ -90,6 +90,8 @@ constexpr uint32_t kGpuPathsPerComputeUnit = 8192;
 constexpr uint32_t kDefaultMaxDepth = 256;
 
 struct RenderSettings {
+    // Samples per pixel asked for, held here alone. In a progressive render
+    // (render/progressive_render.h) 0 asks for no count: time, error or Ctrl-C end it.
     uint32_t spp = 16;
     uint32_t max_depth = kDefaultMaxDepth; // WF_UNLIMITED_DEPTH: ended by roulette alone
     uint32_t seed = 0;

@@ -51,15 +51,15 @@ void WavefrontIntegrator::set_stage_args() {
     }
 }
 
-void WavefrontIntegrator::render_to(uint32_t spp) {
+void WavefrontIntegrator::render_to(uint32_t round_spp) {
     const auto start = std::chrono::steady_clock::now();
-    params_.spp = spp;
+    params_.spp = round_spp;
     set_stage_args();
     if (settings_.schedule == Schedule::Group) {
         run_whole_paths(STAGE_GROUP, group_); // its queues are the work-groups' own
     } else {
         // Every slot goes to the regeneration queue; those whose pixels already
-        // have `spp` samples start nothing and drop out at once.
+        // have `round_spp` samples start nothing and drop out at once.
         queue_every_slot();
         if (settings_.schedule == Schedule::Fullest) run_fullest_first();
         else run_iterations(settings_.schedule == Schedule::Passes);

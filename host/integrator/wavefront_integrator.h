@@ -34,7 +34,7 @@ public:
     WavefrontIntegrator(const OpenClDevice& device, const cl::Program& program, const DeviceScene& scene,
                         const Camera& camera, const RenderSettings& settings);
 
-    void render_to(uint32_t spp) override;
+    void render_to(uint32_t round_spp) override;
 
 private:
     void set_stage_args();

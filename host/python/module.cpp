@@ -2,16 +2,19 @@
 // plots. render() takes every flag of `wavefront render` as a keyword
 // (--pool-size as pool_size=...), parsed by the command line's own parser, so
 // values are checked and errors worded as there; it renders through the
-// command's run_render() and returns the image, the bounce layers and the
-// statistics as NumPy arrays and plain objects. Errors arrive as
-// wavefront.InputError (a ValueError: the input is at fault, exit status 2 on
-// the command line) or wavefront.DeviceError (a RuntimeError: the machine),
-// with the command line's one-line message.
+// render session's run_render(), as the command line does, and returns the
+// image, the bounce layers and the statistics as NumPy arrays and plain
+// objects. Errors arrive as wavefront.InputError (a ValueError: the input is
+// at fault, exit status 2 on the command line) or wavefront.DeviceError (a
+// RuntimeError: the machine), with the command line's one-line message.
+// `python -m wavefront` (__main__.py) runs the command line itself, through
+// _main().
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -24,12 +27,14 @@
 
 #include "base/errors.h"
 #include "cli/cli.h"
-#include "cli/exit_status.h"
-#include "cli/render_command.h"
+#include "cli/run_command.h"
+#include "cli/version_text.h"
 #include "device/opencl_device.h"
 #include "gltf/gltf_loader.h"
 #include "image/image_io.h"
 #include "python/render_keywords.h"
+#include "session/exit_status.h"
+#include "session/run_render.h"
 
 namespace py = pybind11;
 
@@ -383,6 +388,20 @@ PYBIND11_MODULE(wavefront, m) {
         "read_image", [](const std::filesystem::path& path) { return to_array(read_image(path.string())); },
         py::arg("path"),
         "An image file's RGB as linear float32 (8-bit formats are decoded from sRGB), height x width x 3");
+
+    // `python -m wavefront ARGS` (__main__.py): the program's command line and
+    // exit status, its output on the process's own stdout and stderr.
+    m.def(
+        "_main",
+        [](const std::vector<std::string>& args) {
+            std::vector<const char*> argv{"wavefront"};
+            for (const std::string& a : args) argv.push_back(a.c_str());
+            py::gil_scoped_release released;
+            const int status = run_command_line(static_cast<int>(argv.size()), argv.data(), version_text);
+            std::cout.flush();
+            return status;
+        },
+        py::arg("args"));
 
     // render() is a Python function, so that it can carry the signature of
     // every keyword (render_keywords.h); _render does the work.

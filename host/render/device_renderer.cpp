@@ -195,7 +195,7 @@ bool DeviceRenderer::resume(const FilmState& state) {
     return true;
 }
 
-void DeviceRenderer::render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) {
+void DeviceRenderer::render_unit(uint32_t first, uint32_t count, uint32_t round_spp, FilmState& image, bool held) {
     const Film& film = integrator_->film();
     auto start = std::chrono::steady_clock::now();
     auto timed = [&] {
@@ -206,7 +206,7 @@ void DeviceRenderer::render_unit(uint32_t first, uint32_t count, uint32_t spp, F
     integrator_->trace_pixels(first, std::vector<uint32_t>(image.samples.begin() + first,
                                                            image.samples.begin() + first + count));
     timed();
-    integrator_->render_to(spp);
+    integrator_->render_to(round_spp);
     start = std::chrono::steady_clock::now();
     film.read_pixels(device_.queue, first, count, image);
     timed();

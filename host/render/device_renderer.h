@@ -51,19 +51,19 @@ public:
     DeviceRenderer(const OpenClDevice& device, const Scene& scene, const SceneBuild& build, const SceneCamera& camera,
                    ImageSize size, const RenderSettings& settings);
 
-    // Continues every pixel it traces up to `spp` samples, unless settings.stop ends the round early.
-    void render_to(uint32_t spp) { integrator_->render_to(spp); }
-    // Continues the listed pixels, each of which has `from` samples, up to `spp` (adaptive sampling).
-    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp) {
+    // A round: continues every pixel it traces up to `round_spp` samples, unless settings.stop ends it early.
+    void render_to(uint32_t round_spp) { integrator_->render_to(round_spp); }
+    // A round of adaptive sampling: continues the listed pixels, each of which has `from` samples, up to `round_spp`.
+    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t round_spp) {
         integrator_->trace_pixel_list(pixels, from);
-        integrator_->render_to(spp);
+        integrator_->render_to(round_spp);
     }
     // Goes on from a stopped render's film (host/film/partial_render.h) over
     // the whole image, when its sample counts are those this pool leaves;
     // false, and nothing changed, when they are not.
     bool resume(const FilmState& state);
     // A unit of work (unit_worker.h), one path slot a pixel.
-    void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) override;
+    void render_unit(uint32_t first, uint32_t count, uint32_t round_spp, FilmState& image, bool held) override;
     std::string name() const override { return device_.info.name; }
     uint32_t most_pixels() const override { return stats().pool_size; }
     RenderStats counts() const override { return stats().without_counter_reads(); }

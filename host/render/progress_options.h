@@ -1,6 +1,7 @@
 // progress_options.h — when a progressive render (progressive_render.h)
-// stops and how often it reports: a sample count, a time budget, a target
-// error, Ctrl-C. No OpenCL: the command line fills it in.
+// stops and how often it reports: a time budget, a target error, Ctrl-C, and
+// the sample count the settings ask for (RenderSettings::spp, not copied
+// here). No OpenCL: the command line fills it in.
 #pragma once
 
 #include <atomic>
@@ -11,7 +12,6 @@
 namespace wf {
 
 struct ProgressOptions {
-    uint32_t max_spp = 16;      // 0: no limit (a time budget or target error ends the render)
     double time_budget = 0.0;   // seconds; 0: none
     double target_relmse = 0.0; // stop once the estimated relMSE falls below it (from 16 spp on); 0: none
     // Each pixel stops on its own once its error is below target_relmse

@@ -22,8 +22,8 @@ constexpr uint32_t kUnlimitedSpp = 1u << 24;
 constexpr uint32_t kMinSppForTargetError = 16;
 
 // The sample count the next round should reach, or `done` when none fits.
-uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_spp, double elapsed) {
-    const uint32_t limit = o.max_spp ? o.max_spp : kUnlimitedSpp;
+uint32_t next_round(const ProgressOptions& o, uint32_t spp, uint32_t done, double seconds_per_spp, double elapsed) {
+    const uint32_t limit = spp ? spp : kUnlimitedSpp;
     uint32_t next = done == 0 ? 1u : 2u * done;
     if (o.report_every > 0.0 && seconds_per_spp > 0.0)
         next = done + std::max(1u, static_cast<uint32_t>(std::min(o.report_every / seconds_per_spp, double(limit))));
@@ -37,7 +37,7 @@ uint32_t next_round(const ProgressOptions& o, uint32_t done, double seconds_per_
 
 } // namespace
 
-FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
+FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const ProgressOptions& options,
                                  const std::function<void(const Checkpoint&)>& on_checkpoint) {
     if (options.adaptive && !renderer.renders_in_place())
         throw InputError("--adaptive samples the image on one device, and goes on only from a partial render of "
@@ -54,7 +54,7 @@ FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& opti
     for (;;) {
         const RenderStats stats = renderer.stats(); // this run's: a resumed render's earlier samples are not in it
         const double seconds_per_spp = stats.samples ? stats.seconds / double(stats.samples) * sampling : 0.0;
-        const uint32_t next = next_round(options, done, seconds_per_spp, elapsed());
+        const uint32_t next = next_round(options, spp, done, seconds_per_spp, elapsed());
         if (next <= done) break;
         if (going_on) renderer.render_pixels_to(*going_on, done, next);
         else renderer.render_to(next);

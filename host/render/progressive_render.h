@@ -23,10 +23,12 @@ struct Checkpoint {
     std::optional<double> relmse_estimate; // from 2 spp on: one sample has no variance
 };
 
-// Renders until a stop condition holds, calling `on_checkpoint` after every
-// round. Returns the final film. Throws InputError when adaptive sampling is
-// asked of a render that does not run in place (Renderer::renders_in_place).
-FilmReadout render_progressively(Renderer& renderer, const ProgressOptions& options,
+// Renders up to `spp` samples per pixel (RenderSettings::spp; 0: no limit, a
+// time budget or target error ends the render) or until another stop
+// condition holds, calling `on_checkpoint` after every round. Returns the
+// final film. Throws InputError when adaptive sampling is asked of a render
+// that does not run in place (Renderer::renders_in_place).
+FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const ProgressOptions& options,
                                  const std::function<void(const Checkpoint&)>& on_checkpoint);
 
 } // namespace wf

@@ -49,22 +49,22 @@ void Renderer::add_workers(std::vector<std::unique_ptr<UnitWorker>> workers) {
     }
 }
 
-void Renderer::render_to(uint32_t spp) {
-    if (!by_units_) return devices_[0]->render_to(spp);
+void Renderer::render_to(uint32_t round_spp) {
+    if (!by_units_) return devices_[0]->render_to(round_spp);
     round_start_ = std::chrono::steady_clock::now();
     in_round_ = true;
-    render_units(spp);
+    render_units(round_spp);
     std::lock_guard<std::mutex> lock(progress_mutex_);
     in_round_ = false;
     seconds_ += since(round_start_);
 }
 
-void Renderer::render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp) {
+void Renderer::render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t round_spp) {
     if (by_units_) throw std::logic_error("render_pixels_to: the image is rendered by units of work");
-    devices_[0]->render_pixels_to(pixels, from, spp);
+    devices_[0]->render_pixels_to(pixels, from, round_spp);
 }
 
-void Renderer::render_units(uint32_t spp) {
+void Renderer::render_units(uint32_t round_spp) {
     WorkUnits units(pixels(), static_cast<uint32_t>(workers_.size()));
     std::atomic<bool> failed{false};
     std::vector<std::exception_ptr> errors(workers_.size());
@@ -78,7 +78,7 @@ void Renderer::render_units(uint32_t spp) {
                 const auto start = std::chrono::steady_clock::now();
                 const bool held = std::all_of(holder_.begin() + run.first, holder_.begin() + run.first + run.count,
                                               [&](int h) { return h == static_cast<int>(w) || h == kEveryWorker; });
-                worker.render_unit(run.first, run.count, spp, image_, held);
+                worker.render_unit(run.first, run.count, round_spp, image_, held);
                 std::fill_n(holder_.begin() + run.first, run.count, static_cast<int>(w));
                 const RenderStats counts = local ? RenderStats{} : worker.counts();
                 std::lock_guard<std::mutex> lock(progress_mutex_);

@@ -31,12 +31,12 @@ public:
     // and the first round: from then on every round goes by units.
     void add_workers(std::vector<std::unique_ptr<UnitWorker>> workers);
 
-    // Continues every pixel up to `spp` samples, unless settings.stop ends the round early.
-    void render_to(uint32_t spp);
-    // Continues the listed pixels, each of which has `from` samples, up to
-    // `spp` (adaptive sampling, adaptive_sampling.h). Only where one device
-    // renders the image in place (renders_in_place()).
-    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t spp);
+    // A round: continues every pixel up to `round_spp` samples, unless settings.stop ends it early.
+    void render_to(uint32_t round_spp);
+    // A round of adaptive sampling (adaptive_sampling.h): continues the listed
+    // pixels, each of which has `from` samples, up to `round_spp`. Only where
+    // one device renders the image in place (renders_in_place()).
+    void render_pixels_to(const std::vector<uint32_t>& pixels, uint32_t from, uint32_t round_spp);
     // One device, the whole image on it: not units of work over several
     // devices, nor a partial render its pool did not leave.
     bool renders_in_place() const { return !by_units_; }
@@ -58,7 +58,7 @@ public:
 
 private:
     // Units of work over the workers, each in a thread of its own when there are several.
-    void render_units(uint32_t spp);
+    void render_units(uint32_t round_spp);
     // Under progress_mutex_: worker w's counts as they now are, passed on summed.
     void report_progress(size_t w, const RenderStats& counts);
 

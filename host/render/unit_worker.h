@@ -15,10 +15,10 @@ class UnitWorker {
 public:
     virtual ~UnitWorker() = default;
 
-    // Pixels [first, first + count) of `image` taken to `spp` samples (count
-    // at most most_pixels()). Their sums are sent to the worker first unless
-    // `held` (it has them already), and read back into `image` after.
-    virtual void render_unit(uint32_t first, uint32_t count, uint32_t spp, FilmState& image, bool held) = 0;
+    // Pixels [first, first + count) of `image` taken to `round_spp` samples
+    // (count at most most_pixels()). Their sums are sent to the worker first
+    // unless `held` (it has them already), and read back into `image` after.
+    virtual void render_unit(uint32_t first, uint32_t count, uint32_t round_spp, FilmState& image, bool held) = 0;
 
     virtual std::string name() const = 0;     // for the report
     virtual uint32_t most_pixels() const = 0; // its pool: one slot a pixel

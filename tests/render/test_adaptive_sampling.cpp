@@ -72,10 +72,9 @@ FilmState render_uniform(const Scene& scene, RenderSettings settings, uint32_t s
 FilmState render_adaptive(const Scene& scene, const RenderSettings& settings, double target) {
     Renderer renderer(test::cpu_device(), scene, *scene.camera, kSize, settings);
     ProgressOptions options;
-    options.max_spp = kMostSpp;
     options.target_relmse = target;
     options.adaptive = true;
-    render_progressively(renderer, options, [](const Checkpoint&) {});
+    render_progressively(renderer, kMostSpp, options, [](const Checkpoint&) {});
     return renderer.film_state();
 }
 
@@ -160,12 +159,11 @@ TEST(AdaptiveSampling, EveryPixelUnderTheTargetEndsTheRender) {
     settings.aovs = WF_AOV_SAMPLES;
     Renderer renderer(test::cpu_device(), scene, *scene.camera, kSize, settings);
     ProgressOptions options;
-    options.max_spp = 0; // open-ended: only the pixels' errors end it
     options.target_relmse = 0.05;
     options.adaptive = true;
     std::vector<Checkpoint> checkpoints;
     const FilmReadout film =
-        render_progressively(renderer, options, [&](const Checkpoint& c) { checkpoints.push_back(c); });
+        render_progressively(renderer, 0, options, [&](const Checkpoint& c) { checkpoints.push_back(c); });
     ASSERT_FALSE(checkpoints.empty());
     EXPECT_EQ(checkpoints.back().pixels_sampling, 0u);
     ASSERT_TRUE(film.samples);

@@ -1,137 +1,33 @@
-// render_command.cpp — a render from the command line: load, check, render in
-// rounds with a checkpoint table, write. Everything that can be rejected (the
-// scene, the reference, the output format) is rejected before rendering.
-#include "cli/render_command.h"
+// run_render.cpp — everything that can be rejected (the scene, the
+// reference, the output format, a partial render to resume) is rejected
+// before rendering; Ctrl-C writes what the render has, and a partial render
+// to go on from.
+#include "session/run_render.h"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <ostream>
 
 #include <unistd.h>
 
-#include "scene/environment_map.h"
 #include "base/errors.h"
-#include "base/file_fingerprint.h"
 #include "base/output_files.h"
+#include "film/partial_render.h"
 #include "gltf/gltf_loader.h"
 #include "image/denoiser.h"
 #include "image/image_io.h"
-#include "cli/interrupt.h"
-#include "film/partial_render.h"
-#include "cli/progress_line.h"
-#include "device/program_cache.h"
 #include "render/progressive_render.h"
 #include "render/render_stats_json.h"
 #include "render/renderer.h"
+#include "session/checkpoint_log.h"
+#include "session/image_options.h"
+#include "session/interrupt.h"
+#include "session/kernel_cache.h"
+#include "session/progress_line.h"
+#include "session/render_scene.h"
 
 namespace wf {
 namespace {
-
-std::string mib(size_t bytes) { return std::to_string((bytes + 1048575) / 1048576) + " MiB"; }
-
-// The scene's absolute path without links or dot segments, for metadata.
-std::string canonical_path(const std::string& path) {
-    std::error_code ec;
-    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
-    return ec ? path : canonical.string();
-}
-
-// One checkpoint as a table row and a CSV line; error columns stay empty
-// without a reference.
-class CheckpointLog {
-public:
-    CheckpointLog(std::ostream& table, const std::string& csv_path) : table_(table) {
-        if (!csv_path.empty()) {
-            csv_.open(csv_path);
-            if (!csv_) throw InputError(csv_path + ": cannot write the report");
-            csv_ << "seconds,spp,mse,relmse,mae,relmse_estimate\n";
-        }
-        table_ << "   seconds       spp          mse       relmse          mae   relmse est.\n";
-    }
-
-    void add(const Checkpoint& c) {
-        table_ << std::fixed << std::setprecision(3) << std::setw(10) << c.seconds << std::setw(10) << c.spp
-               << std::scientific << std::setprecision(4);
-        if (c.error)
-            table_ << std::setw(13) << c.error->mse << std::setw(13) << c.error->relmse << std::setw(13) << c.error->mae;
-        else
-            table_ << std::setw(39) << "";
-        if (c.relmse_estimate) table_ << std::setw(14) << *c.relmse_estimate;
-        table_ << std::defaultfloat << "\n" << std::flush;
-        if (!csv_.is_open()) return;
-        csv_ << std::setprecision(9) << c.seconds << "," << c.spp << ",";
-        if (c.error) csv_ << c.error->mse << "," << c.error->relmse << "," << c.error->mae;
-        else csv_ << ",,";
-        csv_ << ",";
-        if (c.relmse_estimate) csv_ << *c.relmse_estimate;
-        csv_ << "\n" << std::flush;
-    }
-
-private:
-    std::ostream& table_;
-    std::ofstream csv_;
-};
-
-std::string look_at_text(const std::array<float, 9>& v) {
-    std::string text;
-    for (float x : v) text += (text.empty() ? "" : ",") + std::to_string(x);
-    return text;
-}
-
-// --look-at's camera in place of the file's, and --fov on whichever camera renders.
-void camera_for_render(Scene& scene, const RenderOptions& o) {
-    if (o.look_at) {
-        const std::array<float, 9>& v = *o.look_at;
-        scene.camera =
-            camera_looking_at({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, {v[6], v[7], v[8]}, kDefaultVerticalFov);
-    }
-    if (o.fov) {
-        if (!scene.camera) scene.camera = frame_bounds(scene.bounds());
-        scene.camera->vertical_fov = glm::radians(*o.fov);
-    }
-}
-
-// What shapes the image, for every output's metadata and for --resume to
-// check: a partial render continues only under the same values. The pool and
-// the devices are not among them: they change no byte (renderer.h).
-ImageOptions image_options(const RenderOptions& o, ImageSize size) {
-    const RenderSettings& s = o.settings;
-    return {{"scene", canonical_path(o.scene)},
-            {"scene-contents", file_fingerprint(o.scene)},
-            {"size", std::to_string(size.width) + "x" + std::to_string(size.height)},
-            {"camera", o.look_at ? "look-at" : o.camera < 0 ? "first" : std::to_string(o.camera)},
-            {"look-at", o.look_at ? look_at_text(*o.look_at) : "none"},
-            {"fov", o.fov ? std::to_string(*o.fov) : "the camera's"},
-            {"seed", std::to_string(s.seed)},
-            {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
-            {"light-sampling", choice_name(kLightSamplingNames, s.light_sampling)},
-            {"hemisphere", choice_name(kHemisphereNames, s.hemisphere)},
-            {"sampler", choice_name(kSamplerNames, s.sampler)},
-            {"env", o.environment.empty() ? "none" : o.environment},
-            {"env-rotate", std::to_string(o.environment_rotate)},
-            {"env-scale", std::to_string(o.environment_scale)},
-            {"env-uniform", o.environment_uniform ? std::to_string(*o.environment_uniform) : "none"},
-            {"aov", aov_names(s)},
-            {"version", WF_VERSION}};
-}
-
-// The options of an image that --denoise made: those of the render, and the denoiser.
-ImageOptions with_denoiser(ImageOptions options) {
-    options.push_back({"denoise", "Open Image Denoise 2.x, RT filter, hdr, prefiltered albedo and normal"});
-    return options;
-}
-
-// What a partial render must share with this one to go on: every option but
-// the scene's path, since the scene's contents decide wherever it now lies.
-ImageOptions resume_checks(ImageOptions options) {
-    options.erase(std::remove_if(options.begin(), options.end(), [](const auto& o) { return o.first == "scene"; }),
-                  options.end());
-    return options;
-}
 
 // Every file the render may write, checked before any work starts: the
 // image, the partial render that Ctrl-C or --checkpoint-every writes beside
@@ -158,38 +54,6 @@ std::vector<ImageLayer> aov_layers(const FilmReadout& film) {
 }
 
 } // namespace
-
-void print_devices(std::ostream& out) {
-    for (const DeviceInfo& d : list_devices())
-        out << "[" << d.index << "] " << d.name << "\n    type " << d.type << ", " << d.compute_units
-            << " compute units, " << mib(d.global_memory) << " global memory (" << mib(d.max_allocation)
-            << " per buffer)\n    platform " << d.platform << ", " << d.version << ", driver " << d.driver << "\n";
-}
-
-std::string cache_directory(const std::string& requested) {
-    if (!requested.empty()) return requested;
-    const std::optional<std::filesystem::path> fallback = ProgramCache::default_directory();
-    return fallback ? fallback->string() : std::string();
-}
-
-Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
-    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
-    light_for_render(scene, options, log);
-    return scene;
-}
-
-void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& log) {
-    if (!options.environment.empty()) {
-        auto map = std::make_shared<EnvironmentMap>(
-            load_environment(options.environment, options.environment_scale, options.environment_rotate));
-        for (const std::string& w : map->warnings) log << "warning: " << w << "\n"; // each names the file
-        scene.environment = std::move(map);
-    }
-    if (options.environment_uniform == 0.0f) return; // a black world, as asked, whatever lights the scene has
-    if (options.environment_uniform)
-        scene.environment = std::make_shared<EnvironmentMap>(constant_environment(*options.environment_uniform));
-    light_unlit_scene(scene);
-}
 
 RenderSettings device_settings(const RenderOptions& options, const std::atomic<int>* stop) {
     RenderSettings settings = options.settings; // with --denoise's guides among its AOVs (cli.cpp)
@@ -227,8 +91,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
         resumed = read_partial_render(options.resume);
         check_partial_options(*resumed, options.resume, resume_checks(shaping));
         const uint32_t held = resolve(resumed->film).min_samples;
-        if (options.progress.max_spp && options.progress.max_spp <= held)
-            throw InputError("--spp " + std::to_string(options.progress.max_spp) + ": " + options.resume +
+        if (options.settings.spp && options.settings.spp <= held)
+            throw InputError("--spp " + std::to_string(options.settings.spp) + ": " + options.resume +
                              " already holds " + std::to_string(held) + " spp; ask for more to go on");
     }
     if (layers && hooks.write_image && !holds_float_radiance(options.output))
@@ -276,9 +140,8 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     metadata.seed = options.settings.seed;
     metadata.scene = canonical_path(options.scene);
     metadata.options = shaping;
-    const ProgressGoal goal{uint64_t{size.width} * size.height, progress.start_spp, progress.max_spp,
-                            progress.time_budget};
-    ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, goal);
+    ProgressLine progress_line(log, terminal, terminal ? 0.25 : 10.0, uint64_t{size.width} * size.height,
+                               options.settings.spp, progress);
     renderer.on_progress([&](const RenderStats& s) {
         if (!options.quiet) progress_line.update(s);
         if (hooks.on_progress) hooks.on_progress(s);
@@ -294,7 +157,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     };
     auto last_checkpoint = std::chrono::steady_clock::now();
     CheckpointLog checkpoints(out, options.report_csv);
-    const FilmReadout film = render_progressively(renderer, progress, [&](const Checkpoint& c) {
+    const FilmReadout film = render_progressively(renderer, options.settings.spp, progress, [&](const Checkpoint& c) {
         progress_line.clear(); // stdout and stderr may share the terminal
         checkpoints.add(c);
         if (hooks.on_checkpoint) hooks.on_checkpoint(c);
@@ -370,29 +233,6 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (hooks.film) *hooks.film = film;
     if (hooks.denoised && denoised) *hooks.denoised = std::move(*denoised);
     return summary;
-}
-
-void warm_cache(const CacheOptions& options, std::ostream& out) {
-    const std::string directory = cache_directory(options.directory);
-    if (directory.empty()) throw InputError("cache warm: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
-    const OpenClDevice device = open_device(options.device);
-    RenderSettings settings;
-    settings.cache_dir = directory;
-    for (const std::string& path : options.scenes) {
-        Scene scene = load_gltf(path);
-        light_unlit_scene(scene);
-        std::string features;
-        const KernelProgram program = build_render_program(device, scene, settings, &features);
-        out << path << ": " << features << ": " << (program.from_cache ? "already cached" : "compiled") << " in "
-            << program.build_seconds << " s\n";
-    }
-    out << "cache: " << directory << "\n";
-}
-
-void clear_cache(const CacheOptions& options, std::ostream& out) {
-    const std::string directory = cache_directory(options.directory);
-    if (directory.empty()) throw InputError("cache clear: no cache directory (set --cache-dir, XDG_CACHE_HOME or HOME)");
-    out << "removed " << ProgramCache(directory).clear() << " compiled programs from " << directory << "\n";
 }
 
 } // namespace wf

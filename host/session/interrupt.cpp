@@ -1,6 +1,6 @@
 // interrupt.cpp — the handler only stores to a lock-free atomic, or calls
 // _exit: both are async-signal-safe.
-#include "cli/interrupt.h"
+#include "session/interrupt.h"
 
 #include <csignal>
 

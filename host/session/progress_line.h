@@ -12,21 +12,18 @@
 #include <ostream>
 
 #include "integrator/path_integrator.h"
+#include "render/progress_options.h"
 
 namespace wf {
 
-// What the line counts towards.
-struct ProgressGoal {
-    uint64_t pixels = 1;
-    uint32_t start_spp = 0;  // samples per pixel a resumed render starts from
-    uint32_t max_spp = 0;    // 0: open (a time budget or a target error ends the render)
-    double time_budget = 0.0; // seconds; 0: none
-};
-
 class ProgressLine {
 public:
-    // `period`: the least time between two lines (a terminal's: a few a second).
-    ProgressLine(std::ostream& out, bool terminal, double period, const ProgressGoal& goal);
+    // `period`: the least time between two lines (a terminal's: a few a
+    // second). The line counts towards `spp` samples on each of `pixels`
+    // (RenderSettings::spp; 0: open, a time budget or a target error ends the
+    // render) from `progress.start_spp`, within `progress.time_budget`.
+    ProgressLine(std::ostream& out, bool terminal, double period, uint64_t pixels, uint32_t spp,
+                 const ProgressOptions& progress);
 
     // After every read of the device counters; prints when its period has
     // passed, or at once after clear().
@@ -40,7 +37,9 @@ private:
     std::ostream& out_;
     bool terminal_;
     double period_;
-    ProgressGoal goal_;
+    uint64_t pixels_;
+    uint32_t spp_, start_spp_;
+    double time_budget_;
     std::chrono::steady_clock::time_point start_, last_;
     std::optional<double> relmse_;
     bool shown_ = false;   // a terminal's line is on screen

@@ -1,6 +1,7 @@
 // exit_status.h — the exit-code policy of every executable of the project, in
 // one place: 2 when the input is at fault (InputError), 1 when the machine is
 // (DeviceError, a failed OpenCL call, anything else), with one line on stderr.
+// The Python module raises InputError or DeviceError by the same split.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // exit_status.cpp — an OpenCL failure names the call and its code.
-#include "cli/exit_status.h"
+#include "session/exit_status.h"
 
 #include <iostream>
 

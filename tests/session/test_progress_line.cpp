@@ -6,11 +6,19 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/progress_line.h"
+#include "session/progress_line.h"
 #include "support/test_support.h"
 
 namespace wf {
 namespace {
+
+// A render that goes on from `start_spp` samples, within `time_budget` seconds (0: none).
+ProgressOptions progress_from(uint32_t start_spp, double time_budget = 0.0) {
+    ProgressOptions progress;
+    progress.start_spp = start_spp;
+    progress.time_budget = time_budget;
+    return progress;
+}
 
 RenderStats some_progress() {
     RenderStats stats;
@@ -23,7 +31,7 @@ RenderStats some_progress() {
 TEST(ProgressLine, ALogGetsWholeLinesWithSppRatesAndTimes) {
     std::ostringstream log;
     // 2.5 M samples over 78125 pixels: 32 spp of 128.
-    ProgressLine line(log, /*terminal=*/false, /*period=*/0.0, ProgressGoal{78'125, 0, 128, 0.0});
+    ProgressLine line(log, /*terminal=*/false, /*period=*/0.0, /*pixels=*/78'125, /*spp=*/128, progress_from(0));
     line.set_error(1.5e-3);
     line.update(some_progress());
     line.clear();
@@ -37,20 +45,20 @@ TEST(ProgressLine, ALogGetsWholeLinesWithSppRatesAndTimes) {
 
 TEST(ProgressLine, AResumedRenderCountsFromWhereItStarted) {
     std::ostringstream log;
-    ProgressLine line(log, false, 0.0, ProgressGoal{250'000, 40, 64, 0.0});
+    ProgressLine line(log, false, 0.0, 250'000, 64, progress_from(40));
     line.update(some_progress()); // 10 spp more
     EXPECT_NE(log.str().find("render: 50/64 spp (resumed from 40), "), std::string::npos) << log.str();
 }
 
 TEST(ProgressLine, ATerminalGetsOneLineRewrittenAndErasedForOtherOutput) {
     std::ostringstream tty;
-    ProgressLine line(tty, /*terminal=*/true, /*period=*/1e9, ProgressGoal{250'000, 0, 0, /*time_budget=*/60.0});
+    ProgressLine line(tty, /*terminal=*/true, /*period=*/1e9, 250'000, /*spp=*/0, progress_from(0, /*time_budget=*/60.0));
     line.update(some_progress()); // before the period: nothing yet
     EXPECT_EQ(tty.str(), "");
     line.clear(); // nothing on screen: nothing to erase
     EXPECT_EQ(tty.str(), "");
 
-    ProgressLine shown(tty, true, 0.0, ProgressGoal{250'000, 0, 0, 60.0});
+    ProgressLine shown(tty, true, 0.0, 250'000, 0, progress_from(0, 60.0));
     shown.update(some_progress());
     EXPECT_EQ(tty.str().rfind("\r\33[Krender: 10 spp, ", 0), 0u) << tty.str();
     EXPECT_NE(tty.str().find(", left 0:0"), std::string::npos) << tty.str(); // what is left of the budget

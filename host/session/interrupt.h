@@ -1,6 +1,6 @@
 // interrupt.h — Ctrl-C (SIGINT) and SIGTERM during a render: the first asks
 // the render to stop starting samples, finish the paths in flight and write
-// what it has (render_command.cpp); a second ends the process at once.
+// what it has (run_render.cpp); a second ends the process at once.
 #pragma once
 
 #include <atomic>
