@@ -341,9 +341,10 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->type_name("X")
         ->group(error);
     render.add_flag("--adaptive", o.progress.adaptive,
-                    with_default("Adaptive sampling: from 16 spp on, each pixel stops once its estimated relMSE "
-                                 "(the mean of its 3x3 neighbourhood's) is below --target-error, unless a neighbour "
-                                 "goes on; the render ends when every pixel has stopped, or at --spp or --time",
+                    with_default("Adaptive sampling toward --target-error: from 16 spp on, each pixel stops once it "
+                                 "has the share of samples its variance (its 3x3 neighbourhood's) is worth, the "
+                                 "square-root allocation that meets the target soonest; the render still ends on "
+                                 "the image's error, or at --spp or --time",
                                  "off"))
         ->group(error);
 
@@ -418,7 +419,7 @@ void settle_render(RenderOptions& o, const RenderFlags& f) {
     if (s.schedule == Schedule::Group && s.sort_materials)
         throw InputError("render: --sort-materials sorts the wavefront's global queue; --schedule group has none");
     if (o.progress.adaptive && o.progress.target_relmse <= 0.0)
-        throw InputError("render: --adaptive stops each pixel at --target-error; give one");
+        throw InputError("render: --adaptive shares the samples out toward --target-error; give one");
     // A time budget or a target error alone leaves the sample count open.
     const bool open_ended = o.progress.time_budget > 0.0 || o.progress.target_relmse > 0.0;
     if (!f.spp_flag->count() && open_ended) s.spp = 0;

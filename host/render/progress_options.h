@@ -14,8 +14,9 @@ namespace wf {
 struct ProgressOptions {
     double time_budget = 0.0;   // seconds; 0: none
     double target_relmse = 0.0; // stop once the estimated relMSE falls below it (from 16 spp on); 0: none
-    // Each pixel stops on its own once its error is below target_relmse
-    // (render/adaptive_sampling.h); needs a target, and one device rendering in place.
+    // Pixels stop apart, each when its samples are what its variance is
+    // worth toward target_relmse (render/adaptive_sampling.h); needs the
+    // target, and one device rendering in place.
     bool adaptive = false;
     double report_every = 0.0;  // seconds between checkpoints; 0: at each doubling of spp
     const Image* reference = nullptr;

@@ -46,26 +46,28 @@ FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const Progres
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     FilmReadout film;
     uint32_t done = options.start_spp;
-    // Adaptive sampling's pixels that go on, once it has stopped any (from
-    // kMinSppForTargetError on); until then every pixel takes every round.
-    std::optional<std::vector<uint32_t>> going_on;
+    // With --adaptive, from kMinSppForTargetError on, the pixels that go on
+    // (`listed` once it has chosen); until then every pixel takes every round.
     const ImageSize size = renderer.size();
+    std::optional<AdaptiveSampling> adaptive;
+    if (options.adaptive) adaptive.emplace(size.width, size.height, options.target_relmse);
+    bool listed = false;
     uint32_t sampling = size.width * size.height;
     for (;;) {
         const RenderStats stats = renderer.stats(); // this run's: a resumed render's earlier samples are not in it
         const double seconds_per_spp = stats.samples ? stats.seconds / double(stats.samples) * sampling : 0.0;
         const uint32_t next = next_round(options, spp, done, seconds_per_spp, elapsed());
         if (next <= done) break;
-        if (going_on) renderer.render_pixels_to(*going_on, done, next);
+        if (listed) renderer.render_pixels_to(adaptive->going_on(), done, next);
         else renderer.render_to(next);
         film = renderer.read();
         const bool stopped = stop_requested(options.stop);
         // Stopped within a round, the pixels adaptive sampling continued have between `done` and `next`.
-        done = stopped ? (going_on ? done : film.min_samples) : next;
-        if (options.adaptive && !stopped && done >= kMinSppForTargetError) {
-            if (!going_on) going_on = every_pixel(size.width, size.height);
-            going_on = unfinished_pixels(film.mean, film.variance_of_mean, options.target_relmse, *going_on);
-            sampling = static_cast<uint32_t>(going_on->size());
+        done = stopped ? (listed ? done : film.min_samples) : next;
+        if (adaptive && !stopped && done >= kMinSppForTargetError) {
+            adaptive->update(film, done);
+            listed = true;
+            sampling = static_cast<uint32_t>(adaptive->going_on().size());
         }
 
         Checkpoint c;
@@ -77,9 +79,9 @@ FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const Progres
         on_checkpoint(c);
 
         const bool time_is_up = options.time_budget > 0.0 && c.seconds >= options.time_budget;
-        // Adaptive sampling ends when every pixel has stopped on its own error, not on the image's.
+        // The image's error; adaptive sampling stops every pixel only about when it is below the target.
         const bool accurate = options.target_relmse > 0.0 && done >= kMinSppForTargetError &&
-                              (options.adaptive ? sampling == 0 : *c.relmse_estimate < options.target_relmse);
+                              (*c.relmse_estimate < options.target_relmse || sampling == 0);
         if (time_is_up || accurate || stopped) break;
     }
     return film;

@@ -293,7 +293,7 @@ TEST_F(Cli, AdaptiveSamplingKeepsEachPixelsCount) {
     EXPECT_EQ(fewest, 16.0f);
     EXPECT_EQ(most, 64.0f);
     EXPECT_NE(r.out.find(", 16 to 64 spp, "), std::string::npos) << r.out;
-    expect_rejected(base + "-o " + path("a.exr"), "--adaptive stops each pixel at --target-error");
+    expect_rejected(base + "-o " + path("a.exr"), "--adaptive shares the samples out toward --target-error");
     EXPECT_FALSE(fs::exists(path("a.exr")));
 }
 
