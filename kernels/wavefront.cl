@@ -110,14 +110,23 @@ __kernel void accumulate(WF_STAGE_PARAMS) {
 
 /* --schedule group: the same stage functions, each work-group running them
  * over its own WF_LOCAL_SIZE slots, stage by stage, with its queues in local
- * memory. One launch takes one sample of every slot to its end, as the
- * megakernel does, but each stage runs over the group's paths before the next
- * starts (PoCL runs the code between two barriers as a loop over the
- * work-items), so a stage's code and the group's path state stay in the
- * core's caches instead of the whole pool streaming through memory at every
- * stage. A slot's pixels and samples are the other schedules', and so are the
- * bytes. Pushes are local atomics: a work-group runs on one thread. */
+ * memory. Each stage runs over the group's paths before the next starts
+ * (PoCL runs the code between two barriers as a loop over the work-items), so
+ * a stage's code and the group's path state stay in the core's caches instead
+ * of the whole pool streaming through memory at every stage. A slot whose path
+ * ends starts its next sample in the same launch, up to WF_GROUP_SAMPLES a
+ * launch, so that the group's stages run over a full queue instead of
+ * dwindling to the longest path's few last bounces. A slot's pixels and
+ * samples are the other schedules', and so are the bytes. Pushes are local
+ * atomics: a work-group runs on one thread. */
 #ifdef WF_LOCAL_SIZE
+/* Samples a slot may start in one launch: enough that the tail of a launch,
+ * where the group's last paths run on alone, is a small part of it; few
+ * enough that the host reads the counters (progress, Ctrl-C) often. */
+#ifndef WF_GROUP_SAMPLES
+#define WF_GROUP_SAMPLES 4u
+#endif
+
 typedef struct LocalQueue {
     uint slots[WF_LOCAL_SIZE];
     uint length;
@@ -145,13 +154,17 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     __local float lanes[WF_LANE_FIELDS * WF_LANE_CAPACITY];
     __local uint lanes_length;
 #endif
-    const uint lid = get_local_id(0);
+    __local uint samples_started[WF_LOCAL_SIZE]; /* in this launch, by slot - first_slot */
+    const uint lid = get_local_id(0), first_slot = get_group_id(0) * get_local_size(0);
+    samples_started[lid] = 0u;
     if (lid < WF_QUEUE_COUNT) queue[lid].length = 0u;
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
-    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own))
+    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own)) {
+        samples_started[lid] = 1u;
         local_push(&queue[WF_QUEUE_EXTEND], own);
+    }
     /* by the entries this work-item took: */
     uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u, lane_paths = 0u, lane_slots = 0u;
     /* Work-item 0 counts the paths that entered each queue, for the study of
@@ -161,7 +174,6 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     uint entered[WF_QUEUE_COUNT];
     for (uint q = 0u; q < WF_QUEUE_COUNT; ++q) entered[q] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
-    if (lid == 0) entered[WF_QUEUE_REGENERATE] = queue[WF_QUEUE_EXTEND].length;
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
         {
             uint slot[WF_TRACE_WIDTH];
@@ -231,6 +243,12 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             const uint slot = queue[WF_QUEUE_FINISHED].slots[lid];
             nonfinite += accumulate_path(&path, &params, slot, &film) ? 1u : 0u;
             atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
+            /* The slot's next sample, while it has one this launch. */
+            if (samples_started[slot - first_slot] < WF_GROUP_SAMPLES &&
+                start_camera_sample(&path, &params, &camera, slot)) {
+                ++samples_started[slot - first_slot];
+                local_push(&queue[WF_QUEUE_EXTEND], slot);
+            }
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid == 0) {
@@ -248,8 +266,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
+    /* The paths that entered generate are the samples the group started. */
+    group_atomic_add(&counters[WF_QUEUE_REGENERATE], samples_started[lid], scratch);
     if (lid == 0)
         for (uint q = 0u; q < WF_QUEUE_COUNT; ++q)
-            if (entered[q]) atomic_add(&counters[q], entered[q]);
+            if (entered[q] && q != WF_QUEUE_REGENERATE) atomic_add(&counters[q], entered[q]);
 }
 #endif

@@ -178,9 +178,9 @@ protected:
     std::array<cl_uint, WF_COUNTER_COUNT> read_counters(uint32_t clear_from);
     // Every slot to the regeneration queue, the other counters to zero: the start of a round.
     void queue_every_slot();
-    // Launches `kernel`, which takes one sample of every slot that has samples
-    // left through its whole path (the megakernel, --schedule group), until
-    // every pixel has params_.spp samples or the render is stopped.
+    // Launches `kernel`, which takes one sample (the megakernel) or a few
+    // (--schedule group) of every slot that has samples left through their
+    // whole paths, until every pixel has params_.spp samples or the render is stopped.
     void run_whole_paths(Stage stage, const cl::Kernel& kernel);
     bool stopping() const { return stop_requested(settings_.stop); }
 
