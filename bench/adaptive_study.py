@@ -13,17 +13,11 @@ Usage: python3 bench/adaptive_study.py [--size N] [--ref-spp N] [--seed S]
        (about 12 minutes on 2 cores at the defaults; python3-matplotlib for the plot)
 """
 
-import argparse
 import math
-import os
 import sys
 
-import numpy as np
-
-from throughput import REAL, ROOT
-
-sys.path.insert(0, os.path.join(ROOT, "build", "python"))
-import wavefront  # noqa: E402  the module scripts/setup.sh builds
+from error_study import reference_image, study_arguments, wavefront
+from throughput import REAL
 
 SCENES = [  # name, path from the repository root, extra keywords
     ("Cornell box", "scenes/cornell-box.gltf", {}),
@@ -46,20 +40,13 @@ def log_interpolate(points, t):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--size", type=int, default=128)
-    parser.add_argument("--ref-spp", type=int, default=4096)
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--out")
-    parser.add_argument("--plot")
-    args = parser.parse_args()
-    os.chdir(ROOT)
+    args = study_arguments(__doc__, size=128)
 
     rows, curves, device = [], {}, ""
     for name, path, extra in SCENES:
         scene = wavefront.load_scene(path)
         common = dict(width=args.size, height=args.size, quiet=True, **extra)
-        reference = wavefront.render(scene, spp=args.ref_spp, seed=args.seed + 1000, **common).image
+        reference = reference_image(scene, args, **common)
         uniform = wavefront.render(scene, spp=UNIFORM_SPP, seed=args.seed, reference=reference, **common)
         device = uniform.device
         points = [(c.seconds, c.relmse) for c in uniform.checkpoints if c.spp >= 16]

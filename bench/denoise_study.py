@@ -16,16 +16,12 @@ Usage: python3 bench/denoise_study.py [--size N] [--ref-spp N] [--seed S]
        build/oidn-venv, and python3-matplotlib for the plot)
 """
 
-import argparse
-import os
 import sys
 
 import numpy as np
 
-from throughput import REAL, ROOT
-
-sys.path.insert(0, os.path.join(ROOT, "build", "python"))
-import wavefront  # noqa: E402  the module scripts/setup.sh builds
+from error_study import reference_image, study_arguments, wavefront
+from throughput import REAL
 
 SCENES = [  # name, path from the repository root, extra keywords
     ("Cornell box", "scenes/cornell-box.gltf", {}),
@@ -40,20 +36,13 @@ def relmse(image, reference):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--size", type=int, default=256)
-    parser.add_argument("--ref-spp", type=int, default=4096)
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--out")
-    parser.add_argument("--plot")
-    args = parser.parse_args()
-    os.chdir(ROOT)
+    args = study_arguments(__doc__, size=256)
 
     rows, curves, device = [], {}, ""
     for name, path, extra in SCENES:
         scene = wavefront.load_scene(path)
         common = dict(width=args.size, height=args.size, quiet=True, **extra)
-        reference = wavefront.render(scene, spp=args.ref_spp, seed=args.seed + 1000, **common).image
+        reference = reference_image(scene, args, **common)
         curves[name] = []
         for spp in SPPS:
             r = wavefront.render(scene, spp=spp, seed=args.seed, denoise=True, **common)
