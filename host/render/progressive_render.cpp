@@ -1,8 +1,9 @@
 // progressive_render.cpp — round sizes: doubling by default; with
 // --report-every, as many samples as the measured rate fits in that time; and
 // never more than the time budget has left. The rate is per sample, so that a
-// round of adaptive sampling's fewer pixels is expected to take less time. Rounds change nothing in the image
-// (wavefront_integrator.h), only when the film is looked at.
+// round of adaptive sampling's fewer pixels is expected to take less time.
+// Rounds change nothing in the image (wavefront_integrator.h), only when the
+// film is looked at.
 #include "render/progressive_render.h"
 
 #include <algorithm>
@@ -79,7 +80,8 @@ FilmReadout render_progressively(Renderer& renderer, uint32_t spp, const Progres
         on_checkpoint(c);
 
         const bool time_is_up = options.time_budget > 0.0 && c.seconds >= options.time_budget;
-        // The image's error; adaptive sampling stops every pixel only about when it is below the target.
+        // The image's error. Adaptive sampling stops its last pixels about when
+        // the image meets the target (adaptive_sampling.h), and then nothing is left to render.
         const bool accurate = options.target_relmse > 0.0 && done >= kMinSppForTargetError &&
                               (*c.relmse_estimate < options.target_relmse || sampling == 0);
         if (time_is_up || accurate || stopped) break;
