@@ -169,8 +169,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u, lane_paths = 0u, lane_slots = 0u;
     /* Work-item 0 counts the paths that entered each queue, for the study of
      * the schedule; added to the global queues' counters, which this
-     * schedule leaves unused, at the end (CounterSnapshot says so). The
-     * paths that entered generate are those that took a camera sample. */
+     * schedule leaves unused, at the end (CounterSnapshot says so); those
+     * that entered generate, the camera samples started, from samples_started. */
     uint entered[WF_QUEUE_COUNT];
     for (uint q = 0u; q < WF_QUEUE_COUNT; ++q) entered[q] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -266,10 +266,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
-    /* The paths that entered generate are the samples the group started. */
     group_atomic_add(&counters[WF_QUEUE_REGENERATE], samples_started[lid], scratch);
     if (lid == 0)
         for (uint q = 0u; q < WF_QUEUE_COUNT; ++q)
-            if (entered[q] && q != WF_QUEUE_REGENERATE) atomic_add(&counters[q], entered[q]);
+            if (entered[q]) atomic_add(&counters[q], entered[q]);
 }
 #endif
