@@ -11,11 +11,7 @@
 
 namespace wf {
 
-Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
-    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
-    light_for_render(scene, options, log);
-    return scene;
-}
+namespace {
 
 void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& log) {
     if (!options.environment.empty()) {
@@ -40,6 +36,19 @@ void camera_for_render(Scene& scene, const RenderOptions& o) {
         if (!scene.camera) scene.camera = frame_bounds(scene.bounds());
         scene.camera->vertical_fov = glm::radians(*o.fov);
     }
+}
+
+} // namespace
+
+void ready_for_render(Scene& scene, const RenderOptions& options, std::ostream& log) {
+    light_for_render(scene, options, log);
+    camera_for_render(scene, options);
+}
+
+Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
+    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    ready_for_render(scene, options, log);
+    return scene;
 }
 
 } // namespace wf

@@ -11,12 +11,12 @@
 
 namespace wf {
 
-// The scene the options name, with its environment and a light if it has
-// none (light_for_render): what every rank of a render loads. Warnings go to `log`.
+// The scene the options name, made ready (ready_for_render): what every rank
+// of a render loads. Warnings go to `log`.
 Scene load_render_scene(const RenderOptions& options, std::ostream& log);
-void light_for_render(Scene& scene, const RenderOptions& options, std::ostream& log);
-
-// --look-at's camera in place of the file's, and --fov on whichever camera renders.
-void camera_for_render(Scene& scene, const RenderOptions& options);
+// A loaded scene lit by the options' environment, and by a white one where it
+// has no light at all; then --look-at's camera in place of the file's, and
+// --fov on whichever camera renders.
+void ready_for_render(Scene& scene, const RenderOptions& options, std::ostream& log);
 
 } // namespace wf

@@ -69,10 +69,9 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     if (options.denoise) denoiser_library();
     check_outputs(options, hooks.write_image);
     Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera});
-    light_for_render(scene, options, log);
+    ready_for_render(scene, options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";
-    camera_for_render(scene, options);
     if (!scene.camera) log << "note: " << options.scene << " has no camera; framing its bounds\n";
 
     const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);

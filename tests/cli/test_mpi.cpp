@@ -101,6 +101,17 @@ TEST_F(Mpi, OneTwoAndThreeRanksGiveTheBytesOfOneProcess) {
     }
 }
 
+// --look-at and --fov shape the camera every rank renders through, not only rank 0's.
+TEST_F(Mpi, EveryRankRendersTheCommandLinesCamera) {
+    const std::string camera = " --look-at 400,300,-600,278,273,0 --fov 50";
+    const test::ProcessResult single =
+        test::run_wavefront(render_args(path("single.exr"), 4) + camera, dir_.string());
+    ASSERT_EQ(single.exit_code, 0) << single.err;
+    const test::ProcessResult r = run(mpirun(2, render_args(path("ranks2.exr"), 4) + camera));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(same_pixels(read_image(path("single.exr")), read_image(path("ranks2.exr"))));
+}
+
 // Ctrl-C reaches mpirun, which passes SIGTERM to every rank: rank 0 writes
 // the image and the partial render; resumed on three ranks and on one, it
 // ends with the bytes of a render never stopped.
