@@ -16,7 +16,7 @@
 #include "stages/intersect.h"
 #include "stages/sort_by_material.h"
 #include "stages/shade.h"
-#include "bsdf/kind_lanes.h"
+#include "stages/shade_lanes.h"
 #include "stages/intersect_shadow.h"
 #include "stages/roulette.h"
 #include "stages/accumulate.h"
@@ -185,25 +185,29 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
 #endif
         barrier(CLK_LOCAL_MEM_FENCE);
 #ifdef WF_GROUP_LANES
-        /* Shade in three steps: each path's surface, whose queries of the
-         * laned kind wait in local memory; those answered WF_LANE_WIDTH paths
-         * a work-item (bsdf/kind_lanes.h); each path's scatter. */
-        ShadeContext shading;
-        BsdfAnswer answer;
-        bool needs_core = false;
+        /* Shade in three steps: each path's surface, after which a path of
+         * a kind with lanes waits in local memory and any other is shaded
+         * to its end; those waiting, WF_LANE_WIDTH paths a work-item
+         * (stages/shade_lanes.h); their scatters into the path state. */
+        uint next = WF_QUEUE_FINISHED;
         uint lane_at = WF_LANE_CAPACITY; /* none */
         if (lid < extending) {
-            needs_core = shade_surface(&path, &params, queue[WF_QUEUE_EXTEND].slots[lid], &scene, &film, &shading);
-            if (needs_core && shading.kind == WF_BSDF_OPAQUE) {
-                lane_at = atomic_inc(&lanes_length);
-                bsdf_lanes_put(lanes, lane_at, &shading.query);
-            } else if (needs_core) {
-                answer = bsdf_core(shading.kind, &shading.query);
+            const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
+            ShadeContext shading;
+            if (shade_surface(&path, &params, slot, &scene, &film, &shading)) {
+                if (shading.kind == WF_BSDF_OPAQUE) {
+                    lane_at = atomic_inc(&lanes_length);
+                    shade_lanes_put(lanes, lane_at, &shading);
+                } else {
+                    const BsdfAnswer answer = bsdf_core(shading.kind, &shading.query);
+                    next = shade_scatter(&path, &params, slot, &shading, &answer);
+                }
             }
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid * WF_LANE_WIDTH < lanes_length) {
-            bsdf_lanes_answer(lanes, lid * WF_LANE_WIDTH, lanes_length, params.hemisphere);
+            shade_lanes_run(lanes, lid * WF_LANE_WIDTH, lanes_length, params.hemisphere, params.light_sampling,
+                            2.0f * params.scene_diameter);
             lane_paths += min((uint)WF_LANE_WIDTH, lanes_length - lid * WF_LANE_WIDTH);
             lane_slots += WF_LANE_WIDTH;
         }
@@ -212,8 +216,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         if (lid < extending) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
 #ifdef WF_GROUP_LANES
-            if (lane_at < WF_LANE_CAPACITY) answer = bsdf_lanes_get(lanes, lane_at);
-            const uint next = needs_core ? shade_scatter(&path, &params, slot, &shading, &answer) : WF_QUEUE_FINISHED;
+            if (lane_at < WF_LANE_CAPACITY) {
+                const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at);
+                next = write_scatter(&path, slot, &scattered);
+            }
 #else
             const uint next = shade_path(&path, &params, slot, &scene, &film);
 #endif

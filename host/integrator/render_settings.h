@@ -110,7 +110,7 @@ struct RenderSettings {
     Schedule schedule = Schedule::Auto; // for the wavefront integrator; the renderer resolves Auto
     QueuePush queue_push = QueuePush::Group;
     bool sort_materials = false; // reorder the extension queue by material before shade
-    // The group schedule's BSDF lanes (kernels/bsdf/kind_lanes.h): 1 (none), 8
+    // The group schedule's BSDF lanes (kernels/stages/shade_lanes.h): 1 (none), 8
     // or 16 paths a work-item; 0: 8 on a device of 8-float vectors or wider,
     // else 1 (render/device_renderer.cpp). The same bytes at every width.
     uint32_t lane_width = 0;

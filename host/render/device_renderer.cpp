@@ -83,7 +83,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     // The scan and the group schedule size their local arrays by the launch's local size.
     if (settings.queue_push == QueuePush::Scan || group)
         p.options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
-    // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/bsdf/kind_lanes.h).
+    // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/stages/shade_lanes.h).
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
     if (settings.trace_width > 1) p.options += " -DWF_TRACE_WIDTH=" + std::to_string(settings.trace_width);

@@ -52,7 +52,7 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     out << std::setprecision(2);
     out << "samples    " << st.samples << " at " << per_second(st.samples, st.seconds) * 1e-6 << " M/s; mean path "
         << per_second(st.closest_rays, st.samples) << " segments; non-finite samples " << st.nonfinite_samples << "\n";
-    if (st.lane_slots > 0) // the group schedule's BSDF lanes (kernels/bsdf/kind_lanes.h)
+    if (st.lane_slots > 0) // the group schedule's BSDF lanes (kernels/stages/shade_lanes.h)
         out << "lanes      " << st.lane_paths << " BSDF queries in lanes, " << std::setprecision(1)
             << 100.0 * per_second(st.lane_paths, st.lane_slots) << "% of the lanes filled\n"
             << std::setprecision(2);

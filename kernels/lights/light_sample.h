@@ -1,12 +1,12 @@
 /* light_sample.h — what next-event estimation gets from any light, and how its
  * shadow ray ends. The kinds (include/wavefront/scene_types.h) sample
  * themselves in lights/emissive_triangles.h, lights/punctual.h and
- * lights/environment.h; lights/choose_light.h picks one of them. */
+ * lights/environment.h; lights/choose_light.h picks one of them. The shadow
+ * segment is the scatter's (stages/scatter.inc). */
 #ifndef WF_LIGHT_SAMPLE_H
 #define WF_LIGHT_SAMPLE_H
 
 #include "wavefront/compat.h"
-#include "geometry/ray_offset.h"
 
 #define WF_SEGMENT_TO_SURFACE 0u  /* stops short of the light's surface: area lights */
 #define WF_SEGMENT_TO_POINT 1u    /* ends at the light: point and spot lights */
@@ -31,15 +31,6 @@ WF_INLINE LightSample no_light_sample(void) {
     s.delta = false;
     s.segment_end = WF_SEGMENT_TO_INFINITY;
     return s;
-}
-
-/* The shadow segment from `origin` (already offset off its surface) to the
- * light; `reach` is longer than any segment inside the scene's bounds. */
-WF_INLINE float3 light_shadow_segment(const LightSample* s, float3 origin, float reach) {
-    if (s->segment_end == WF_SEGMENT_TO_SURFACE)
-        return segment_to_surface(origin, s->point, s->point_error, s->normal);
-    if (s->segment_end == WF_SEGMENT_TO_POINT) return s->point - origin;
-    return s->wi * reach;
 }
 
 #endif

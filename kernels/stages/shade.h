@@ -12,11 +12,12 @@
  * (mirror, smooth glass) takes no light sample and passes pdf 0 on, so the
  * emission its ray finds is counted whole.
  *
- * In three steps, so that the group schedule can run the middle one in SIMD
- * lanes (bsdf/kind_lanes.h): shade_surface (the above up to a BsdfQuery),
- * the BSDF core (the BSDF at the light sample, and a sample), shade_scatter
- * (the shadow and continuation rays, and the next queue). shade_path runs the
- * three for one path, with the core at width 1. */
+ * In three steps, so that the group schedule can run the last two in SIMD
+ * lanes (stages/shade_lanes.h): shade_surface (the above up to a BsdfQuery),
+ * the BSDF core (the BSDF at the light sample, and a sample), and the
+ * scatter (the shadow and continuation rays, written once for any width in
+ * stages/scatter.inc, and the next queue). shade_path runs the three for one
+ * path at width 1. */
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
@@ -25,7 +26,6 @@
 #include "path_view.h"
 #include "scene_view.h"
 #include "film_view.h"
-#include "common/finite.h"
 #include "common/bounce_layers.h"
 #include "common/first_hit_aovs.h"
 #include "common/sample_values.h"
@@ -34,6 +34,7 @@
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 #include "geometry/triangle_blocks.h"
+#include "lanes/lanes.h"
 
 typedef struct SurfaceHit {
     float3 position;
@@ -84,15 +85,6 @@ typedef struct ShadingFrame {
 } ShadingFrame;
 
 WF_INLINE float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
-WF_INLINE float3 from_local(const ShadingFrame* f, float3 v) { return v.x * f->x + v.y * f->y + v.z * f->z; }
-
-/* A world direction the BSDF gave or evaluated, with its local z: it must
- * leave on the side of the geometric surface that the shading normal says,
- * else it would cross the surface where the two normals disagree (a leak). */
-WF_INLINE bool same_side(float3 geometric_normal, float3 w, float local_z) {
-    const float g = dot(geometric_normal, w);
-    return (g > 0.0f && local_z > 0.0f) || (g < 0.0f && local_z < 0.0f);
-}
 
 /* What the surface hands on to the scatter, around the BSDF core. */
 typedef struct ShadeContext {
@@ -180,6 +172,7 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
      * lights are sampled whatever the technique: nothing else finds them. */
     q->light = params->light_count > 0u && !bsdf_is_delta(&q->params);
     q->wi_light = (float3)(0.0f, 0.0f, 1.0f);
+    c->light = no_light_sample();
     if (q->light) {
         const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
         c->light = sample_light(params, scene, s.position, u);
@@ -189,53 +182,72 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
     return true;
 }
 
-/* The scatter: the shadow ray of the light sample, weighed by MIS, and the
- * continuation ray of the BSDF sample, into the path state; returns the queue
- * the path goes to next. A path with a shadow ray waits for it there
- * (intersect_shadow sends it on), so no stage can overwrite the pending ray
- * whatever order the scheduler launches them in. */
-WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
-                          const BsdfAnswer* a) {
-    const BsdfQuery* q = &c->query;
-    bool shadow_ray = false, continues = false;
-    float3 shadow_light = (float3)(0.0f); /* what the shadow ray delivers, if there is one */
-    if (q->light) {
-        const LightSample* ls = &c->light;
-        const bool counted = ls->delta || params->light_sampling != WF_LIGHT_SAMPLING_BSDF;
-        if (counted && ls->pdf > 0.0f && same_side(c->geometric_normal, ls->wi, q->wi_light.z)) {
-            const float weight = params->light_sampling == WF_LIGHT_SAMPLING_MIS && !ls->delta
-                                     ? power_heuristic(ls->pdf, a->pdf_light)
-                                     : 1.0f;
-            const float3 contribution =
-                c->throughput * a->f_light * ls->radiance * (fabs(q->wi_light.z) * weight / ls->pdf);
-            if (any(contribution > 0.0f) && is_finite3(contribution)) {
-                const float3 origin = offset_ray_origin(c->position, c->position_error, c->geometric_normal, ls->wi);
-                path->shadow_origin[slot] = (float4)(origin, 0.0f);
-                path->shadow_segment[slot] =
-                    (float4)(light_shadow_segment(ls, origin, 2.0f * params->scene_diameter), 0.0f);
-                shadow_light = contribution;
-                shadow_ray = true;
-            }
-        }
-    }
+/* The scatter's arithmetic, written once for any lane width. */
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "stages/scatter.inc"
+#undef WF_W
 
-    /* The continuation, by BSDF sampling. */
-    const BsdfSample* bs = &a->sample;
-    const float3 wi = from_local(&c->frame, bs->wi);
-    if (bs->pdf > 0.0f && same_side(c->geometric_normal, wi, bs->wi.z)) {
-        const float3 weight = bs->f * (fabs(bs->wi.z) / bs->pdf);
-        if (any(weight > 0.0f) && is_finite3(weight)) {
-            set_path_throughput(path, slot, c->throughput * weight, c->depth + 1u);
-            path->ray_origin[slot] =
-                (float4)(offset_ray_origin(c->position, c->position_error, c->geometric_normal, wi), 0.0f);
-            path->ray_direction[slot] = (float4)(wi, bs->delta ? 0.0f : bs->pdf);
-            continues = true;
-        }
+/* The scatter's inputs for one path, at width 1. */
+WF_INLINE void scatter_inputs_x1(const ShadeContext* c, const BsdfAnswer* a, ScatterSurface_x1* s,
+                                 ScatterLight_x1* l, ScatterAnswer_x1* answer) {
+    s->position = vec_from_float3(c->position);
+    s->position_error = vec_from_float3(c->position_error);
+    s->geometric_normal = vec_from_float3(c->geometric_normal);
+    s->frame_x = vec_from_float3(c->frame.x);
+    s->frame_y = vec_from_float3(c->frame.y);
+    s->frame_z = vec_from_float3(c->frame.z);
+    s->throughput = rgb_from_float3(c->throughput);
+    l->present = c->query.light;
+    l->wi = vec_from_float3(c->light.wi);
+    l->wi_local_z = c->query.wi_light.z;
+    l->radiance = rgb_from_float3(c->light.radiance);
+    l->pdf = c->light.pdf;
+    l->delta = c->light.delta;
+    l->segment_end = (int)c->light.segment_end;
+    l->point = vec_from_float3(c->light.point);
+    l->point_error = vec_from_float3(c->light.point_error);
+    l->normal = vec_from_float3(c->light.normal);
+    answer->f_light = rgb_from_float3(a->f_light);
+    answer->pdf_light = a->pdf_light;
+    answer->wi = vec_from_float3(a->sample.wi);
+    answer->f = rgb_from_float3(a->sample.f);
+    answer->pdf = a->sample.pdf;
+    answer->delta = a->sample.delta;
+}
+
+/* A path's scatter (stages/scatter.inc), at any width, into its path state;
+ * returns the queue the path goes to next. A path with a shadow ray waits
+ * for it there (intersect_shadow sends it on), so no stage can overwrite the
+ * pending ray whatever order the scheduler launches them in. */
+WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out) {
+    const uint depth = path_depth(path, slot);
+    if (out->shadow) {
+        path->shadow_origin[slot] = (float4)(vec_to_float3(out->shadow_origin), 0.0f);
+        path->shadow_segment[slot] = (float4)(vec_to_float3(out->shadow_segment), 0.0f);
+        /* What intersect_shadow needs to send the path on: the bounce layer
+         * the light joins if it arrives, and whether the path goes on after it. */
+        set_shadow_light(path, slot, rgb_to_float3(out->shadow_light), depth + 1u, out->continues);
     }
-    /* What intersect_shadow needs to send the path on: the bounce layer the
-     * light joins if it arrives, and whether the path goes on after it. */
-    if (shadow_ray) set_shadow_light(path, slot, shadow_light, c->depth + 1u, continues);
-    return shadow_ray ? WF_QUEUE_SHADOW : continues ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
+    if (out->continues) {
+        set_path_throughput(path, slot, rgb_to_float3(out->throughput), depth + 1u);
+        path->ray_origin[slot] = (float4)(vec_to_float3(out->ray_origin), 0.0f);
+        path->ray_direction[slot] = (float4)(vec_to_float3(out->ray_direction), out->ray_pdf);
+    }
+    return out->shadow ? WF_QUEUE_SHADOW : out->continues ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
+}
+
+/* The scatter of one path: the shadow ray of the light sample, weighed by
+ * MIS, and the continuation ray of the BSDF sample, into the path state;
+ * returns the queue the path goes to next. */
+WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
+                             const BsdfAnswer* a) {
+    ScatterSurface_x1 s;
+    ScatterLight_x1 l;
+    ScatterAnswer_x1 answer;
+    scatter_inputs_x1(c, a, &s, &l, &answer);
+    const Scatter_x1 out = scatter_x1(&s, &l, &answer, params->light_sampling, 2.0f * params->scene_diameter);
+    return write_scatter(path, slot, &out);
 }
 
 /* The whole stage for one path: surface, the core at width 1, scatter;

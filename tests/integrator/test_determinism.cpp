@@ -84,7 +84,7 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     settings.local_size = 128;
     EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean)) << "group, local size 128";
     settings.local_size = RenderSettings{}.local_size;
-    for (const uint32_t width : {1u, 8u, 16u}) { // its BSDF lanes (kernels/bsdf/kind_lanes.h), none to sixteen
+    for (const uint32_t width : {1u, 8u, 16u}) { // its BSDF lanes (kernels/stages/shade_lanes.h), none to sixteen
         settings.lane_width = width;
         EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean))
             << "group, lane width " << width;

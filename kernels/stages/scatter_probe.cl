@@ -1,0 +1,30 @@
+/* scatter_probe.cl — stages/scatter.inc's one-float step (round_away) at
+ * widths 1 and 8 over arrays of values, beside OpenCL's nextafter, for
+ * tests/kernels/test_scatter.cpp. */
+#include "lanes/lanes.h"
+#include "geometry/float_error.h"
+#include "lights/light_sample.h"
+#include "wavefront/techniques.h"
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "stages/scatter.inc"
+#undef WF_W
+#define WF_W 8
+#include "lanes/lane_width.inc"
+#include "stages/scatter.inc"
+#undef WF_W
+
+/* out[3i], out[3i + 1], out[3i + 2]: nextafter's answer (moved itself for a
+ * step of 0), round_away_x1's and round_away_x8's, for moved[i] and step[i]. */
+__kernel void round_away_probe(__global const float* moved, __global const float* step, __global float* out) {
+    const uint i = get_global_id(0); /* eight values a work-item */
+    const float8 m = vload8(i, moved), s = vload8(i, step);
+    float wide[8];
+    vstore8(round_away_x8(m, s), 0, wide);
+    for (uint k = 0; k < 8u; ++k) {
+        const float x = moved[8 * i + k], d = step[8 * i + k];
+        out[3 * (8 * i + k)] = d == 0.0f ? x : nextafter(x, copysign(INFINITY, d));
+        out[3 * (8 * i + k) + 1] = round_away_x1(x, d);
+        out[3 * (8 * i + k) + 2] = wide[k];
+    }
+}

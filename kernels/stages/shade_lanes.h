@@ -1,0 +1,185 @@
+/* shade_lanes.h — the lane path of shade (stages/shade.h), for the group
+ * schedule: the shading points of a work-group whose BSDF kind has lanes,
+ * gathered into a structure of arrays in local memory (shade_lanes_put, one
+ * path a work-item, after shade_surface), their BSDF core and scatter run
+ * WF_LANE_WIDTH at a time by the width-generic code (shade_lanes_run, one
+ * work-item a run of lanes: bsdf/kinds/opaque.inc, stages/scatter.inc), and
+ * each path's scatter read back (shade_lanes_get) for write_scatter. Its
+ * answers are width 1's to the bit (tests/kernels/test_bsdf_kinds.cpp,
+ * tests/integrator/test_determinism.cpp), so the group schedule makes the
+ * megakernel's bytes. Device only. */
+#ifndef WF_SHADE_LANES_H
+#define WF_SHADE_LANES_H
+
+#include "wavefront/compat.h"
+#include "bsdf/kinds.h"
+#include "stages/shade.h"
+
+#if WF_HAS_BSDF_OPAQUE && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
+#define WF_GROUP_LANES 1
+
+#define WF_W WF_LANE_WIDTH
+#include "lanes/lane_width.inc"
+#include "stages/scatter.inc"
+#undef WF_W
+
+/* Room for a whole work-group, in whole runs of lanes. */
+#define WF_LANE_CAPACITY ((WF_LOCAL_SIZE + WF_LANE_WIDTH - 1) / WF_LANE_WIDTH * WF_LANE_WIDTH)
+
+/* The fields of the structure of arrays, each WF_LANE_CAPACITY floats: the
+ * BSDF query, the scatter's surface and light sample, then what the lanes
+ * give back. A field of three holds x, y, z (or r, g, b) in turn; masks and
+ * the light's segment end are held as floats. */
+enum LaneField {
+    WF_LANE_BASE, WF_LANE_METALLIC = WF_LANE_BASE + 3, WF_LANE_ROUGHNESS, WF_LANE_SPECULAR, WF_LANE_SPECULAR_COLOR,
+    WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_WO, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
+    WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
+    WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
+    WF_LANE_FRAME_Y = WF_LANE_FRAME_X + 3, WF_LANE_FRAME_Z = WF_LANE_FRAME_Y + 3,
+    WF_LANE_THROUGHPUT = WF_LANE_FRAME_Z + 3, WF_LANE_LIGHT = WF_LANE_THROUGHPUT + 3, WF_LANE_LIGHT_WI,
+    WF_LANE_LIGHT_RADIANCE = WF_LANE_LIGHT_WI + 3, WF_LANE_LIGHT_PDF = WF_LANE_LIGHT_RADIANCE + 3,
+    WF_LANE_LIGHT_DELTA, WF_LANE_LIGHT_SEGMENT_END, WF_LANE_LIGHT_POINT,
+    WF_LANE_LIGHT_POINT_ERROR = WF_LANE_LIGHT_POINT + 3, WF_LANE_LIGHT_NORMAL = WF_LANE_LIGHT_POINT_ERROR + 3,
+    WF_LANE_INPUTS = WF_LANE_LIGHT_NORMAL + 3, /* the inputs above, the scatter below */
+    WF_LANE_SHADOW = WF_LANE_INPUTS, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
+    WF_LANE_SHADOW_LIGHT = WF_LANE_SHADOW_SEGMENT + 3, WF_LANE_CONTINUES = WF_LANE_SHADOW_LIGHT + 3,
+    WF_LANE_NEXT_THROUGHPUT, WF_LANE_RAY_ORIGIN = WF_LANE_NEXT_THROUGHPUT + 3,
+    WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3, WF_LANE_FIELDS
+};
+
+#define WF_LANE_AT(soa, field, at) (soa)[(field) * WF_LANE_CAPACITY + (at)]
+
+WF_INLINE void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
+    WF_LANE_AT(soa, field, at) = v.x;
+    WF_LANE_AT(soa, field + 1, at) = v.y;
+    WF_LANE_AT(soa, field + 2, at) = v.z;
+}
+
+WF_INLINE float3 lanes_get3(__local const float* soa, uint field, uint at) {
+    return (float3)(WF_LANE_AT(soa, field, at), WF_LANE_AT(soa, field + 1, at), WF_LANE_AT(soa, field + 2, at));
+}
+
+WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
+    const BsdfQuery* q = &c->query;
+    lanes_put3(soa, WF_LANE_BASE, at, q->params.base_color);
+    WF_LANE_AT(soa, WF_LANE_METALLIC, at) = q->params.metallic;
+    WF_LANE_AT(soa, WF_LANE_ROUGHNESS, at) = q->params.roughness;
+    WF_LANE_AT(soa, WF_LANE_SPECULAR, at) = q->params.specular;
+    lanes_put3(soa, WF_LANE_SPECULAR_COLOR, at, q->params.specular_color);
+    WF_LANE_AT(soa, WF_LANE_IOR, at) = q->params.ior;
+    lanes_put3(soa, WF_LANE_WO, at, q->wo);
+    lanes_put3(soa, WF_LANE_WI_LIGHT, at, q->wi_light);
+    lanes_put3(soa, WF_LANE_U, at, q->u);
+    lanes_put3(soa, WF_LANE_POSITION, at, c->position);
+    lanes_put3(soa, WF_LANE_POSITION_ERROR, at, c->position_error);
+    lanes_put3(soa, WF_LANE_GEOMETRIC_NORMAL, at, c->geometric_normal);
+    lanes_put3(soa, WF_LANE_FRAME_X, at, c->frame.x);
+    lanes_put3(soa, WF_LANE_FRAME_Y, at, c->frame.y);
+    lanes_put3(soa, WF_LANE_FRAME_Z, at, c->frame.z);
+    lanes_put3(soa, WF_LANE_THROUGHPUT, at, c->throughput);
+    WF_LANE_AT(soa, WF_LANE_LIGHT, at) = q->light ? 1.0f : 0.0f;
+    lanes_put3(soa, WF_LANE_LIGHT_WI, at, c->light.wi);
+    lanes_put3(soa, WF_LANE_LIGHT_RADIANCE, at, c->light.radiance);
+    WF_LANE_AT(soa, WF_LANE_LIGHT_PDF, at) = c->light.pdf;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_DELTA, at) = c->light.delta ? 1.0f : 0.0f;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_SEGMENT_END, at) = (float)c->light.segment_end;
+    lanes_put3(soa, WF_LANE_LIGHT_POINT, at, c->light.point);
+    lanes_put3(soa, WF_LANE_LIGHT_POINT_ERROR, at, c->light.point_error);
+    lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, c->light.normal);
+}
+
+/* The scatter of the path put at `at`, as scatter_x1 gives it. */
+WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at) {
+    Scatter_x1 out;
+    out.shadow = WF_LANE_AT(soa, WF_LANE_SHADOW, at) != 0.0f;
+    out.shadow_origin = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_ORIGIN, at));
+    out.shadow_segment = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_SEGMENT, at));
+    out.shadow_light = rgb_from_float3(lanes_get3(soa, WF_LANE_SHADOW_LIGHT, at));
+    out.continues = WF_LANE_AT(soa, WF_LANE_CONTINUES, at) != 0.0f;
+    out.throughput = rgb_from_float3(lanes_get3(soa, WF_LANE_NEXT_THROUGHPUT, at));
+    out.ray_origin = vec_from_float3(lanes_get3(soa, WF_LANE_RAY_ORIGIN, at));
+    out.ray_direction = vec_from_float3(lanes_get3(soa, WF_LANE_RAY_DIRECTION, at));
+    out.ray_pdf = WF_LANE_AT(soa, WF_LANE_RAY_PDF, at);
+    return out;
+}
+
+#define WF_LANE_REAL WF_CAT(lreal, WF_LANE_WIDTH)
+#define WF_LANE_LOAD(field, first) WF_CAT(vload, WF_LANE_WIDTH)(0, &WF_LANE_AT(soa, field, first))
+#define WF_LANE_STORE(x, field, first) WF_CAT(vstore, WF_LANE_WIDTH)((x), 0, &WF_LANE_AT(soa, field, first))
+#define WF_LANE_X(name) WF_CAT(name, WF_CAT(_x, WF_LANE_WIDTH))
+#define WF_LANE_LOAD_VEC(field, first) \
+    WF_LANE_X(vec)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
+#define WF_LANE_LOAD_RGB(field, first) \
+    WF_LANE_X(rgb)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
+#define WF_LANE_STORE_VEC(v, field, first)         \
+    do {                                           \
+        WF_LANE_STORE((v).x, (field), first);      \
+        WF_LANE_STORE((v).y, (field) + 1, first);  \
+        WF_LANE_STORE((v).z, (field) + 2, first);  \
+    } while (0)
+#define WF_LANE_STORE_RGB(c, field, first)         \
+    do {                                           \
+        WF_LANE_STORE((c).r, (field), first);      \
+        WF_LANE_STORE((c).g, (field) + 1, first);  \
+        WF_LANE_STORE((c).b, (field) + 2, first);  \
+    } while (0)
+#define WF_LANE_MASK(field, first) (WF_LANE_LOAD(field, first) != 0.0f)
+#define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
+
+/* Shades the paths put at [first, first + WF_LANE_WIDTH) of `length`: the
+ * BSDF core and the scatter. A run that ends past the last path first repeats
+ * its first path's inputs into the empty lanes, so that no lane reads what
+ * nobody wrote. */
+WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, uint hemisphere, uint light_sampling,
+                               float reach) {
+    for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
+        for (uint f = 0; f < WF_LANE_INPUTS; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
+    WF_LANE_X(OpaqueParams) p;
+    p.base_color = WF_LANE_LOAD_RGB(WF_LANE_BASE, first);
+    p.metallic = WF_LANE_LOAD(WF_LANE_METALLIC, first);
+    p.roughness = WF_LANE_LOAD(WF_LANE_ROUGHNESS, first);
+    p.specular = WF_LANE_LOAD(WF_LANE_SPECULAR, first);
+    p.specular_color = WF_LANE_LOAD_RGB(WF_LANE_SPECULAR_COLOR, first);
+    p.ior = WF_LANE_LOAD(WF_LANE_IOR, first);
+    const WF_CAT(lvec, WF_LANE_WIDTH) wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
+    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_LOAD_VEC(WF_LANE_WI_LIGHT, first);
+    const WF_CAT(lvec, WF_LANE_WIDTH) u = WF_LANE_LOAD_VEC(WF_LANE_U, first);
+    const WF_LANE_X(OpaqueAtWo) at = WF_LANE_X(opaque_at_wo)(&p, wo);
+    WF_LANE_X(ScatterAnswer) a;
+    a.f_light = WF_LANE_X(opaque_eval_pdf)(&p, &at, wo, wi_light, hemisphere, &a.pdf_light);
+    a.f = WF_LANE_X(opaque_sample)(&p, &at, wo, u, hemisphere, &a.wi, &a.pdf, &a.delta);
+
+    WF_LANE_X(ScatterSurface) s;
+    s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
+    s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);
+    s.geometric_normal = WF_LANE_LOAD_VEC(WF_LANE_GEOMETRIC_NORMAL, first);
+    s.frame_x = WF_LANE_LOAD_VEC(WF_LANE_FRAME_X, first);
+    s.frame_y = WF_LANE_LOAD_VEC(WF_LANE_FRAME_Y, first);
+    s.frame_z = WF_LANE_LOAD_VEC(WF_LANE_FRAME_Z, first);
+    s.throughput = WF_LANE_LOAD_RGB(WF_LANE_THROUGHPUT, first);
+    WF_LANE_X(ScatterLight) l;
+    l.present = WF_LANE_MASK(WF_LANE_LIGHT, first);
+    l.wi = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_WI, first);
+    l.wi_local_z = wi_light.z;
+    l.radiance = WF_LANE_LOAD_RGB(WF_LANE_LIGHT_RADIANCE, first);
+    l.pdf = WF_LANE_LOAD(WF_LANE_LIGHT_PDF, first);
+    l.delta = WF_LANE_MASK(WF_LANE_LIGHT_DELTA, first);
+    l.segment_end = WF_CAT(convert_int, WF_LANE_WIDTH)(WF_LANE_LOAD(WF_LANE_LIGHT_SEGMENT_END, first));
+    l.point = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT, first);
+    l.point_error = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT_ERROR, first);
+    l.normal = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_NORMAL, first);
+
+    const WF_LANE_X(Scatter) out = WF_LANE_X(scatter)(&s, &l, &a, light_sampling, reach);
+    WF_LANE_STORE(WF_LANE_FROM_MASK(out.shadow), WF_LANE_SHADOW, first);
+    WF_LANE_STORE_VEC(out.shadow_origin, WF_LANE_SHADOW_ORIGIN, first);
+    WF_LANE_STORE_VEC(out.shadow_segment, WF_LANE_SHADOW_SEGMENT, first);
+    WF_LANE_STORE_RGB(out.shadow_light, WF_LANE_SHADOW_LIGHT, first);
+    WF_LANE_STORE(WF_LANE_FROM_MASK(out.continues), WF_LANE_CONTINUES, first);
+    WF_LANE_STORE_RGB(out.throughput, WF_LANE_NEXT_THROUGHPUT, first);
+    WF_LANE_STORE_VEC(out.ray_origin, WF_LANE_RAY_ORIGIN, first);
+    WF_LANE_STORE_VEC(out.ray_direction, WF_LANE_RAY_DIRECTION, first);
+    WF_LANE_STORE(out.ray_pdf, WF_LANE_RAY_PDF, first);
+}
+
+#endif
+#endif
