@@ -31,9 +31,23 @@
     const RenderParams params, const Camera camera, __global uint *queues, volatile __global uint *counters,  \
     __global const uint *pixel_list
 
+#if WF_GPU_TRAVERSAL
+/* A GPU's traversal stacks (geometry/bvh_traverse.h), in local memory, which
+ * only a kernel's own scope may declare; kernels that trace nothing leave it
+ * unused, and the compiler drops it. */
+#define WF_BIND_TRAVERSAL_STACKS                                                                   \
+    __local uint traversal_nodes[WF_TRAVERSAL_STACK_ENTRIES];                                      \
+    __local uchar traversal_slots[WF_TRAVERSAL_STACK_ENTRIES];
+#define WF_TRAVERSAL_STACK_ARGS traversal_nodes, traversal_slots
+#else
+#define WF_BIND_TRAVERSAL_STACKS
+#define WF_TRAVERSAL_STACK_ARGS
+#endif
+
 #define WF_BIND_STAGE_ARGS                                                                         \
+    WF_BIND_TRAVERSAL_STACKS                                                                       \
     PathState path = {WF_PATH_STATE(WF_PATH_ARG) pixel_list};                                                 \
-    const Scene scene = {WF_SCENE_BUFFERS(WF_SCENE_ARG)};                                          \
+    const Scene scene = {WF_SCENE_BUFFERS(WF_SCENE_ARG) WF_TRAVERSAL_STACK_ARGS};                  \
     const FilmBuffers film = {WF_FILM_BUFFERS(WF_FILM_ARG)}
 
 #endif

@@ -9,6 +9,11 @@
 #define WF_SCENE_MEMBER(type, name, what) __global const type* name;
 typedef struct Scene {
     WF_SCENE_BUFFERS(WF_SCENE_MEMBER)
+#if WF_GPU_TRAVERSAL
+    /* A GPU's traversal stacks, in local memory (geometry/bvh_traverse.h). */
+    __local uint* traversal_nodes;
+    __local uchar* traversal_slots;
+#endif
 } Scene;
 #undef WF_SCENE_MEMBER
 

@@ -5,7 +5,9 @@
 // splits; opening the largest box first keeps the ones a ray meets most.
 //
 // Node 0 is a node of one slot, the scene's box: traversal reads that box and
-// starts at its child, the top of the tree.
+// starts at its child, the top of the tree. Each node's subtree follows it,
+// its interior children's in slot order: a GPU's traversal finds a path again
+// from node indices alone (rebuild_stack, kernels/geometry/bvh_traverse.h).
 //
 // Leaves. The binary builder prices an interior node at a fraction of a wide
 // node's visit, which is what the collapse makes of most of them. But a child

@@ -74,8 +74,11 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     const bool gpu = gpu_kernels(device, settings);
     // Device functions a GPU's linker can always find (wavefront/compat.h); PoCL runs faster without.
     // The glass table out of the constant bank, which holds 64 KiB on NVIDIA's GPUs (bsdf/albedo.h), and
-    // a traversal whose stack is half the size (geometry/bvh_traverse.h).
-    if (gpu) p.options += " -DWF_STATIC_FUNCTIONS=1 -DWF_GLASS_TABLE_IN_SCENE=1 -DWF_GPU_TRAVERSAL=1";
+    // a traversal whose short stack lives in local memory, sized by the launch's local size
+    // (geometry/bvh_traverse.h).
+    if (gpu)
+        p.options += " -DWF_STATIC_FUNCTIONS=1 -DWF_GLASS_TABLE_IN_SCENE=1 -DWF_GPU_TRAVERSAL=1 -DWF_TRAVERSAL_LOCAL_SIZE=" +
+                     std::to_string(settings.local_size);
     if (settings.aovs & WF_AOV_FIRST_HIT) p.options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
     if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
         p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));

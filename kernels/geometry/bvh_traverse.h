@@ -75,15 +75,25 @@
  * WF_BVH_STACK_SIZE children; the builder gives every subtree no more than
  * the room left to it (host/bvh/bvh_builder.cpp says how).
  *
- * A GPU's program (WF_GPU_TRAVERSAL) visits in the same order but keeps only
- * the children's words on the stack, which lives in the thread's local
- * memory there, and tests a node's boxes one at a time (child_slots_met),
- * keeping the nearest as it goes, where eight at once held forty-eight planes
- * in registers. It drops no popped child by its entry: culling is only ever a
- * saving, so the hits are the same. And it tests a leaf's triangles one at a
- * time (triangle_intersect.h), each against the window the ones before it
- * left: a hit beyond the window cannot change the answer (above), so that too
- * is only a saving.
+ * A GPU's program (WF_GPU_TRAVERSAL) visits in the same order, but its
+ * stack holds groups, not children: a node and the slots of it still to
+ * visit (Ylitie et al. 2017), a pop taking the highest and leaving the rest,
+ * so it holds at most one entry per level of the path. It lives in the
+ * work-group's local memory (Aila and Laine 2009), WF_GPU_STACK_SIZE groups a
+ * ray, where 64 children in private memory took scratch. A full stack drops
+ * its bottom group, and once the rest is done, rebuild_stack walks again
+ * from the top of the tree to the last slot taken, pushing at each node the
+ * slots that come after the path's in that order: the dropped groups, less
+ * what the window now culls (a shrunk window culls a suffix of the nearest-
+ * first order, so the path's slot keeps its place). The walk finds the path
+ * from node indices alone (host/bvh/bvh_builder.cpp lays each subtree out
+ * after its node, children in slot order). It drops no popped child by its
+ * entry: culling is only ever a saving, so the hits are the same. It tests a
+ * node's boxes one at a time (child_slots_met), keeping the nearest as it
+ * goes, where eight at once held forty-eight planes in registers; and a
+ * leaf's triangles one at a time (triangle_intersect.h), each against the
+ * window the ones before it left: a hit beyond the window cannot change the
+ * answer (above), so that too is only a saving.
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -110,6 +120,20 @@
 
 /* Pending children, pushed by a node visit that meets several; see above. */
 #define WF_BVH_STACK_SIZE 64
+
+#if WF_GPU_TRAVERSAL
+/* A GPU's pending groups a ray (see above): 12 of 5 bytes for each of 64
+ * work-items keep a work-group's local memory within 4 KiB, a sixteenth of
+ * a gfx90a compute unit's, so that it does not limit occupancy below the
+ * four waves a SIMD intersect's registers allow. A test build may shrink it
+ * to run the rebuild often. */
+#ifndef WF_GPU_STACK_SIZE
+#define WF_GPU_STACK_SIZE 12
+#endif
+/* The local memory a kernel declares for its work-items' stacks, in entries;
+ * WF_TRAVERSAL_LOCAL_SIZE is the launch's local size (the host's -D). */
+#define WF_TRAVERSAL_STACK_ENTRIES (WF_GPU_STACK_SIZE * WF_TRAVERSAL_LOCAL_SIZE * WF_TRACE_WIDTH)
+#endif
 
 WF_DEVICE_BEGIN
 
@@ -336,14 +360,94 @@ typedef struct Traversal {
     float t_max;
     uint32_t child; /* the next child to visit */
     int stack_size;
+#if WF_GPU_TRAVERSAL
+    uint32_t node; /* the node `child` was taken from (0: none yet), */
+    uint32_t slot; /* and its slot there */
+    int lost;      /* a full stack has dropped a group since the last rebuild */
+#endif
 } Traversal;
 
+#if WF_GPU_TRAVERSAL
+/* A ray's pending groups in the work-group's local memory (the kernel
+ * declares it: kernel_params.h), entry i at [i * WF_TRAVERSAL_LOCAL_SIZE]. */
+typedef struct TraversalStack {
+    __local uint* node;
+    __local uchar* slots;
+} TraversalStack;
+
+/* The stack of ray `ray` of this work-item. */
+WF_INLINE TraversalStack traversal_stack(const HitFilter* scene, uint32_t ray) {
+    const uint32_t first = ray * WF_GPU_STACK_SIZE * WF_TRAVERSAL_LOCAL_SIZE + (uint32_t)get_local_id(0);
+    TraversalStack stack;
+    stack.node = scene->traversal_nodes + first;
+    stack.slots = scene->traversal_slots + first;
+    return stack;
+}
+
+/* Pushes node `node`'s slots `slots`; a full stack drops its bottom group first. */
+WF_FORCE_INLINE void push_group(Traversal* t, const TraversalStack* stack, uint32_t node, uint32_t slots) {
+    if (t->stack_size == WF_GPU_STACK_SIZE) {
+        for (int i = 1; i < WF_GPU_STACK_SIZE; ++i) {
+            stack->node[(i - 1) * WF_TRAVERSAL_LOCAL_SIZE] = stack->node[i * WF_TRAVERSAL_LOCAL_SIZE];
+            stack->slots[(i - 1) * WF_TRAVERSAL_LOCAL_SIZE] = stack->slots[i * WF_TRAVERSAL_LOCAL_SIZE];
+        }
+        --t->stack_size;
+        t->lost = 1;
+    }
+    stack->node[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = node;
+    stack->slots[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = (uchar)slots;
+    ++t->stack_size;
+}
+
+/* Goes on to slot `slot` of node `node`. */
+WF_FORCE_INLINE void take_slot(Traversal* t, WF_GLOBAL const BvhNode* nodes, uint32_t node, uint32_t slot) {
+    t->node = node;
+    t->slot = slot;
+    t->child = nodes[node].child[slot];
+}
+
+/* The slots of `node` still to visit once the path below it has gone
+ * through slot `taken`, in the order of visits: the first child, then the
+ * others from the highest slot down. `met` and `first` as child_slots_met
+ * gives them now. */
+WF_FORCE_INLINE uint32_t slots_after(uint32_t met, uint32_t first, uint32_t taken) {
+    return met & ~(1u << first) & (taken == first ? ~0u : (1u << taken) - 1u);
+}
+
+/* Pushes again every group that the path from the top of the tree to the
+ * last slot taken (t->node, t->slot) still holds: the groups a full stack
+ * dropped, now culled by the present window. Interior children follow
+ * their node in slot order, each subtree's nodes consecutive
+ * (host/bvh/bvh_builder.cpp), so the path's slot at a node is that of its
+ * greatest interior child at or below t->node. */
+WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
+                                   int any_hit) {
+    t->lost = 0;
+    for (uint32_t n = nodes->child[0];;) {
+        WF_GLOBAL const BvhNode* node = nodes + n;
+        uint32_t first;
+        const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, any_hit, &first);
+        uint32_t taken = t->slot, below = 0u;
+        if (n != t->node)
+            for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
+                const uint32_t c = node->child[i];
+                if (c != 0u && !(c & WF_BVH_LEAF) && c <= t->node && c > below) {
+                    below = c;
+                    taken = i;
+                }
+            }
+        const uint32_t pending = slots_after(met, first, taken);
+        if (pending != 0u) push_group(t, stack, n, pending);
+        if (n == t->node) return;
+        n = node->child[taken];
+    }
+}
+#else
 typedef struct TraversalStack {
     uint32_t child[WF_BVH_STACK_SIZE];
-#if !WF_GPU_TRAVERSAL
     float entry[WF_BVH_STACK_SIZE];
-#endif
 } TraversalStack;
+#endif
 
 WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* nodes, float3 origin, float3 direction,
                                      float t_max) {
@@ -352,6 +456,11 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->selection = no_hits(t_max);
     t->t_max = t_max;
     t->stack_size = 0;
+#if WF_GPU_TRAVERSAL
+    t->node = 0u;
+    t->slot = 0u;
+    t->lost = 0;
+#endif
     /* Node 0's one child, the top of the tree: its own boxes test the ray
      * against the scene's. */
     t->child = nodes->child[0];
@@ -365,24 +474,26 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
                                     int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     const uint32_t child = t->child;
     if (child & WF_BVH_LEAF) {
-        /* One or two blocks, four triangles at a time. */
         const uint32_t first = child & WF_BVH_FIRST_MASK;
         const uint32_t end = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT) + 1u;
+#if WF_GPU_TRAVERSAL
+        /* One triangle at a time, each culled by the window the ones before it
+         * left, in one flat loop: a loop over blocks around one over their
+         * lanes held 36 more registers (bench/results/gpu-isa.md). */
+        for (uint32_t position = first; position < end; ++position) {
+            WF_GLOBAL const TriangleBlock* b = triangles + position / WF_BLOCK_LANES;
+            const uint32_t lane = position % WF_BLOCK_LANES;
+            const TriangleLanes_x1 one = block_lane(&t->ray, b, lane);
+            TriangleHit hit;
+            if (!intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->selection.window_end, &hit)) continue;
+            if (!WF_HIT_PASSES(triangles, (int32_t)position, &hit)) continue;
+            select_hit(&t->selection, &hit, (int32_t)position, b->light[lane] >= 0);
+            if (stop_at_first_hit) return 1;
+        }
+#else
+        /* One or two blocks, four triangles at a time. */
         for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
             WF_GLOBAL const TriangleBlock* b = triangles + block;
-#if WF_GPU_TRAVERSAL
-            /* One triangle at a time, each culled by the window the ones before it left. */
-            for (uint32_t left = lanes_in_range(block, first, end); left != 0u; left &= left - 1u) {
-                const uint32_t lane = lowest_bit(left);
-                const TriangleLanes_x1 one = block_lane(&t->ray, b, lane);
-                TriangleHit hit;
-                if (!intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->selection.window_end, &hit)) continue;
-                const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
-                if (!WF_HIT_PASSES(triangles, index, &hit)) continue;
-                select_hit(&t->selection, &hit, index, b->light[lane] >= 0);
-                if (stop_at_first_hit) return 1;
-            }
-#else
             const TriangleLanes lanes = block_lanes(&t->ray, b);
             TriangleHit hits[WF_BLOCK_LANES];
             uint32_t found = intersect_triangles(&t->ray, &lanes, lanes_in_range(block, first, end), t->t_max,
@@ -394,16 +505,18 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
                 select_hit(&t->selection, &hits[lane], index, b->light[lane] >= 0);
                 if (stop_at_first_hit) return 1;
             }
-#endif
         }
+#endif
     } else {
         WF_GLOBAL const BvhNode* node = nodes + child;
 #if WF_GPU_TRAVERSAL
         uint32_t next;
         const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, stop_at_first_hit, &next);
-        if (met != 0u) { /* on to the nearest (see above), the others pushed */
-            for (uint32_t m = met & ~(1u << next); m != 0u; m &= m - 1u)
-                stack->child[t->stack_size++] = node->child[lowest_bit(m)];
+        if (met != 0u) { /* on to the nearest (see above), the others pushed as one group */
+            if (met != 1u << next) push_group(t, stack, child, met & ~(1u << next));
+            take_slot(t, nodes, child, next);
+            return 0;
+        }
 #else
         float entry[WF_BVH_WIDTH];
         const uint32_t met = child_entries(&t->box, node, t->selection.window_end, entry);
@@ -421,17 +534,29 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
                 prefetch_child(nodes, triangles, stack->child[t->stack_size]);
                 ++t->stack_size;
             }
-#endif
             t->child = node->child[next];
             return 0;
         }
+#endif
     }
     /* The next pending child, unless the window's end has moved below where
      * it enters its box since it was pushed: its box test would now fail,
      * since the limit scales as the test's own exit does. */
 #if WF_GPU_TRAVERSAL
-    if (t->stack_size == 0) return 1;
-    t->child = stack->child[--t->stack_size];
+    if (t->stack_size == 0) {
+        if (!t->lost) return 1;
+        rebuild_stack(t, stack, nodes, stop_at_first_hit);
+        if (t->stack_size == 0) return 1;
+    }
+    /* The top group's highest slot; the group stays while it has others. */
+    const int top = (t->stack_size - 1) * WF_TRAVERSAL_LOCAL_SIZE;
+    const uint32_t slots = stack->slots[top];
+    const uint32_t slot = 31u - clz(slots);
+    if (slots != 1u << slot)
+        stack->slots[top] = (uchar)(slots & ~(1u << slot));
+    else
+        --t->stack_size;
+    take_slot(t, nodes, stack->node[top], slot);
 #else
     do {
         if (t->stack_size == 0) return 1;
@@ -448,7 +573,11 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
                               float3 origin, float3 direction, float t_max,
                               int stop_at_first_hit WF_HIT_FILTER_PARAM) {
     Traversal t;
+#if WF_GPU_TRAVERSAL
+    TraversalStack stack = traversal_stack(filter, 0u);
+#else
     TraversalStack stack;
+#endif
     traversal_start(&t, nodes, origin, direction, t_max);
     while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG)) {
     }
@@ -462,7 +591,11 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
                                  const float3 origin[2], const float3 direction[2], float t_max,
                                  int stop_at_first_hit WF_HIT_FILTER_PARAM, RayHit hit[2]) {
     Traversal a, b;
+#if WF_GPU_TRAVERSAL
+    TraversalStack stack_a = traversal_stack(filter, 0u), stack_b = traversal_stack(filter, 1u);
+#else
     TraversalStack stack_a, stack_b;
+#endif
     traversal_start(&a, nodes, origin[0], direction[0], t_max);
     traversal_start(&b, nodes, origin[1], direction[1], t_max);
     int a_done = 0, b_done = 0;

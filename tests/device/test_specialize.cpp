@@ -4,6 +4,7 @@
 // random numbers do not depend on the features. Bit for bit, on scenes that
 // between them switch every feature on and off. And a GPU's kernels, run on
 // the CPU device, render the CPU's kernels' bits.
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 #include <memory>
@@ -116,6 +117,28 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
                                              "rough glass ball", integrator);
         expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", integrator);
     }
+}
+
+// The GPU's short stack, shrunk to one group (WF_KERNEL_OPTIONS is appended to
+// the build options), drops groups on every second push and finds them again
+// from the top of the tree (rebuild_stack, geometry/bvh_traverse.h): the
+// same bits. DamagedHelmet's tree is deep enough to drop many at a time.
+TEST(Specialize, GpuKernelsRebuildingTheirStackRenderTheCpuKernelsBits) {
+    Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
+    helmet.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    const char* before = std::getenv("WF_KERNEL_OPTIONS");
+    const std::string kept = before ? before : "";
+    setenv("WF_KERNEL_OPTIONS", (kept + " -DWF_GPU_STACK_SIZE=1").c_str(), 1);
+    for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
+        expect_gpu_kernels_equal_cpu_kernels(
+            helmet, test::camera_looking({0, 0, 3}, {0, 0, -1}, {0, 1, 0}, 0.8f), "DamagedHelmet", integrator);
+        expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", integrator);
+    }
+    if (before)
+        setenv("WF_KERNEL_OPTIONS", kept.c_str(), 1);
+    else
+        unsetenv("WF_KERNEL_OPTIONS");
 }
 
 } // namespace
