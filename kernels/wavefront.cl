@@ -186,8 +186,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         barrier(CLK_LOCAL_MEM_FENCE);
 #ifdef WF_GROUP_LANES
         /* Shade in three steps: each path's surface, after which a path of
-         * a kind with lanes waits in local memory and any other is shaded
-         * to its end; those waiting, WF_LANE_WIDTH paths a work-item
+         * a kind with lanes waits in local memory (with its light sample,
+         * unless the lanes take it) and any other is shaded to its end;
+         * those waiting, WF_LANE_WIDTH paths a work-item
          * (stages/shade_lanes.h); their scatters into the path state. */
         uint next = WF_QUEUE_FINISHED;
         uint lane_at = WF_LANE_CAPACITY; /* none */
@@ -195,6 +196,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
             ShadeContext shading;
             if (shade_surface(&path, &params, slot, &scene, &film, &shading)) {
+                if (!WF_LIGHTS_IN_LANES || shading.kind != WF_BSDF_OPAQUE) shade_light(&params, &scene, &shading);
                 if (shading.kind == WF_BSDF_OPAQUE) {
                     lane_at = atomic_inc(&lanes_length);
                     shade_lanes_put(lanes, lane_at, &shading);
@@ -206,8 +208,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid * WF_LANE_WIDTH < lanes_length) {
-            shade_lanes_run(lanes, lid * WF_LANE_WIDTH, lanes_length, params.hemisphere, params.light_sampling,
-                            2.0f * params.scene_diameter);
+            shade_lanes_run(lanes, lid * WF_LANE_WIDTH, lanes_length, &params, &scene);
             lane_paths += min((uint)WF_LANE_WIDTH, lanes_length - lid * WF_LANE_WIDTH);
             lane_slots += WF_LANE_WIDTH;
         }

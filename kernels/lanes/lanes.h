@@ -19,6 +19,10 @@
 #define WF_CAT_(a, b) a##b
 #define WF_CAT(a, b) WF_CAT_(a, b)
 
+/* The 4-byte words a struct takes: the stride of a gather of one of its
+ * fields across an array of them, from the first element's. */
+#define WF_WORDS(S) ((int)(sizeof(S) / 4u))
+
 typedef float lreal1;
 typedef int lint1;
 typedef float8 lreal8;

@@ -1,6 +1,7 @@
 /* choose_light.h — next-event estimation over every light in the scene: one
  * entry of the alias table, chosen by power (host/device/device_scene.cpp), then a
- * sample of that light by its kind. The returned pdf includes the choice. */
+ * sample of that light by its kind. The returned pdf includes the choice.
+ * The choice and emissive triangles are lights/light_lanes.inc's, at width 1. */
 #ifndef WF_CHOOSE_LIGHT_H
 #define WF_CHOOSE_LIGHT_H
 
@@ -9,21 +10,40 @@
 #include "compiled_features.h"
 #include "scene_view.h"
 #include "lights/light_sample.h"
-#include "lights/emissive_triangles.h"
 #include "lights/environment.h"
 #include "lights/punctual.h"
+#include "geometry/float_error.h"
+#include "materials/alpha_mask.h"
+#include "materials/surface_material.h"
+#include "lanes/lanes.h"
 
-WF_INLINE uint choose_light(__global const LightEntry* lights, uint count, float u_index, float u_alias) {
-    const uint i = min((uint)(u_index * (float)count), count - 1u);
-    return u_alias < lights[i].probability ? i : lights[i].alias;
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "lights/light_lanes.inc"
+#undef WF_W
+
+WF_INLINE LightSample light_sample_from_x1(const LightSample_x1* l) {
+    LightSample s;
+    s.wi = vec_to_float3(l->wi);
+    s.radiance = rgb_to_float3(l->radiance);
+    s.pdf = l->pdf;
+    s.delta = l->delta != 0;
+    s.segment_end = (uint)l->segment_end;
+    s.point = vec_to_float3(l->point);
+    s.point_error = vec_to_float3(l->point_error);
+    s.normal = vec_to_float3(l->normal);
+    return s;
 }
 
 /* u.x and u.w choose the light; u.y and u.z place the sample on it. */
 WF_INLINE LightSample sample_light(const RenderParams* params, const Scene* scene, float3 receiver, float4 u) {
-    const LightEntry entry = scene->lights[choose_light(scene->lights, params->light_count, u.x, u.w)];
+    const int chosen = choose_light_x1(scene->lights, params->light_count, u.x, u.w);
+    const LightEntry entry = scene->lights[chosen];
 #if WF_HAS_EMISSIVE_TRIANGLES
-    if (entry.kind == WF_LIGHT_TRIANGLE)
-        return sample_emissive_triangle(entry, scene, receiver, u.yz);
+    if (entry.kind == WF_LIGHT_TRIANGLE) {
+        const LightSample_x1 s = sample_emissive_triangle_x1(scene, chosen, vec_from_float3(receiver), u.y, u.z);
+        return light_sample_from_x1(&s);
+    }
 #endif
     LightSample s = no_light_sample();
 #if WF_HAS_PUNCTUAL_LIGHTS

@@ -1,6 +1,6 @@
 /* light_sample.h — what next-event estimation gets from any light, and how its
  * shadow ray ends. The kinds (include/wavefront/scene_types.h) sample
- * themselves in lights/emissive_triangles.h, lights/punctual.h and
+ * themselves in lights/light_lanes.inc, lights/punctual.h and
  * lights/environment.h; lights/choose_light.h picks one of them. The shadow
  * segment is the scatter's (stages/scatter.inc). */
 #ifndef WF_LIGHT_SAMPLE_H

@@ -1,16 +1,10 @@
 /* scatter_probe.cl — stages/scatter.inc's one-float step (round_away) at
  * widths 1 and 8 over arrays of values, beside OpenCL's nextafter, for
  * tests/kernels/test_scatter.cpp. */
-#include "lanes/lanes.h"
-#include "geometry/float_error.h"
-#include "lights/light_sample.h"
-#include "wavefront/techniques.h"
-#define WF_W 1
-#include "lanes/lane_width.inc"
-#include "stages/scatter.inc"
-#undef WF_W
+#include "stages/shade.h" /* scatter.inc at width 1 */
 #define WF_W 8
 #include "lanes/lane_width.inc"
+#include "lights/light_lanes.inc"
 #include "stages/scatter.inc"
 #undef WF_W
 

@@ -12,12 +12,12 @@
  * (mirror, smooth glass) takes no light sample and passes pdf 0 on, so the
  * emission its ray finds is counted whole.
  *
- * In three steps, so that the group schedule can run the last two in SIMD
+ * In steps, so that the group schedule can run all but the first in SIMD
  * lanes (stages/shade_lanes.h): shade_surface (the above up to a BsdfQuery),
- * the BSDF core (the BSDF at the light sample, and a sample), and the
- * scatter (the shadow and continuation rays, written once for any width in
- * stages/scatter.inc, and the next queue). shade_path runs the three for one
- * path at width 1. */
+ * shade_light (the light sample: lights/light_lanes.inc for emissive
+ * triangles), the BSDF core (the BSDF at the light sample, and a sample),
+ * and the scatter (the shadow and continuation rays, stages/scatter.inc, and
+ * the next queue). shade_path runs them for one path at width 1. */
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
@@ -94,12 +94,14 @@ typedef struct ShadeContext {
     ShadingFrame frame;
     float3 throughput;
     uint depth;
-    LightSample light; /* valid where query.light */
+    float4 light_u;    /* the light sample's numbers, where query.light */
+    LightSample light; /* shade_light's, where query.light */
 } ShadeContext;
 
 /* The surface: what the ray found (the environment on a miss, emission on a
- * hit, weighed by MIS), then, unless the path ends here, the shading frame,
- * the BSDF's parameters and the light sample: the BSDF core's query.
+ * hit, weighed by MIS), then, unless the path ends here, the shading frame
+ * and the BSDF's parameters: the BSDF core's query, but for its light sample
+ * (shade_light).
  * Returns whether the path needs the core. */
 WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                           const FilmBuffers* film, ShadeContext* c) {
@@ -145,7 +147,7 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
     const int light = triangle_light(scene->triangles, (uint)triangle);
     if (light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
         const float cos_light = -dot(s.geometric_normal, direction);
-        const float pdf_light = light_pdf_solid_angle(scene->lights[light].pmf, s.area, hit.x * hit.x, cos_light);
+        const float pdf_light = light_pdf_solid_angle_x1(scene->lights[light].pmf, s.area, hit.x * hit.x, cos_light);
         const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
         add_radiance(path, params, film, slot, pixel, depth,
                      weight * throughput * surface_emission(m, scene, &point, s.geometric_normal, -direction));
@@ -171,15 +173,20 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */
     q->light = params->light_count > 0u && !bsdf_is_delta(&q->params);
-    q->wi_light = (float3)(0.0f, 0.0f, 1.0f);
-    c->light = no_light_sample();
-    if (q->light) {
-        const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-        c->light = sample_light(params, scene, s.position, u);
-        q->wi_light = to_local(&c->frame, c->light.wi);
-    }
+    if (q->light) c->light_u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
     q->u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF).xyz; /* .w: roulette's */
     return true;
+}
+
+/* The light sample of the query, where it takes one, and its direction in
+ * the shading frame (as the lanes find it: stages/shade_lanes.h). */
+WF_INLINE void shade_light(const RenderParams* params, const Scene* scene, ShadeContext* c) {
+    c->light = no_light_sample();
+    c->query.wi_light = (float3)(0.0f, 0.0f, 1.0f);
+    if (!c->query.light) return;
+    c->light = sample_light(params, scene, c->position, c->light_u);
+    c->query.wi_light = vec_to_float3(vec_in_frame_x1(vec_from_float3(c->light.wi), vec_from_float3(c->frame.x),
+                                                      vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
 }
 
 /* The scatter's arithmetic, written once for any lane width. */
@@ -199,15 +206,15 @@ WF_INLINE void scatter_inputs_x1(const ShadeContext* c, const BsdfAnswer* a, Sca
     s->frame_z = vec_from_float3(c->frame.z);
     s->throughput = rgb_from_float3(c->throughput);
     l->present = c->query.light;
-    l->wi = vec_from_float3(c->light.wi);
+    l->sample.wi = vec_from_float3(c->light.wi);
+    l->sample.radiance = rgb_from_float3(c->light.radiance);
+    l->sample.pdf = c->light.pdf;
+    l->sample.delta = c->light.delta;
+    l->sample.segment_end = (int)c->light.segment_end;
+    l->sample.point = vec_from_float3(c->light.point);
+    l->sample.point_error = vec_from_float3(c->light.point_error);
+    l->sample.normal = vec_from_float3(c->light.normal);
     l->wi_local_z = c->query.wi_light.z;
-    l->radiance = rgb_from_float3(c->light.radiance);
-    l->pdf = c->light.pdf;
-    l->delta = c->light.delta;
-    l->segment_end = (int)c->light.segment_end;
-    l->point = vec_from_float3(c->light.point);
-    l->point_error = vec_from_float3(c->light.point_error);
-    l->normal = vec_from_float3(c->light.normal);
     answer->f_light = rgb_from_float3(a->f_light);
     answer->pdf_light = a->pdf_light;
     answer->wi = vec_from_float3(a->sample.wi);
@@ -250,12 +257,13 @@ WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint s
     return write_scatter(path, slot, &out);
 }
 
-/* The whole stage for one path: surface, the core at width 1, scatter;
- * returns the queue the path goes to next. */
+/* The whole stage for one path: surface, light sample, the core at width 1,
+ * scatter; returns the queue the path goes to next. */
 WF_INLINE uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                        const FilmBuffers* film) {
     ShadeContext c;
     if (!shade_surface(path, params, slot, scene, film, &c)) return WF_QUEUE_FINISHED;
+    shade_light(params, scene, &c);
     const BsdfAnswer a = bsdf_core(c.kind, &c.query);
     return shade_scatter(path, params, slot, &c, &a);
 }

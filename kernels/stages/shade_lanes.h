@@ -1,13 +1,16 @@
 /* shade_lanes.h — the lane path of shade (stages/shade.h), for the group
  * schedule: the shading points of a work-group whose BSDF kind has lanes,
  * gathered into a structure of arrays in local memory (shade_lanes_put, one
- * path a work-item, after shade_surface), their BSDF core and scatter run
- * WF_LANE_WIDTH at a time by the width-generic code (shade_lanes_run, one
- * work-item a run of lanes: bsdf/kinds/opaque.inc, stages/scatter.inc), and
- * each path's scatter read back (shade_lanes_get) for write_scatter. Its
- * answers are width 1's to the bit (tests/kernels/test_bsdf_kinds.cpp,
- * tests/integrator/test_determinism.cpp), so the group schedule makes the
- * megakernel's bytes. Device only. */
+ * path a work-item, after shade_surface), their light sample, BSDF core and
+ * scatter run WF_LANE_WIDTH at a time by the width-generic code
+ * (shade_lanes_run, one work-item a run of lanes: lights/light_lanes.inc,
+ * bsdf/kinds/opaque.inc, stages/scatter.inc), and each path's scatter read
+ * back (shade_lanes_get) for write_scatter. The light sample is taken in
+ * lanes where every light is an emissive triangle whose emission is its
+ * material's factor (WF_LIGHTS_IN_LANES), else by shade_light before the
+ * path is put. Its answers are width 1's to the bit
+ * (tests/kernels/test_bsdf_kinds.cpp, tests/integrator/test_determinism.cpp),
+ * so the group schedule makes the megakernel's bytes. Device only. */
 #ifndef WF_SHADE_LANES_H
 #define WF_SHADE_LANES_H
 
@@ -18,8 +21,15 @@
 #if WF_HAS_BSDF_OPAQUE && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
 #define WF_GROUP_LANES 1
 
+/* Emissive triangles the only lights, and none textured, coated (the
+ * general kind) or alpha-masked: lights/light_lanes.inc samples them in lanes. */
+#define WF_LIGHTS_IN_LANES                                                                          \
+    (WF_HAS_EMISSIVE_TRIANGLES && !WF_HAS_PUNCTUAL_LIGHTS && !WF_HAS_ENVIRONMENT && !WF_HAS_TEXTURES && \
+     !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL)
+
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
+#include "lights/light_lanes.inc"
 #include "stages/scatter.inc"
 #undef WF_W
 
@@ -27,16 +37,17 @@
 #define WF_LANE_CAPACITY ((WF_LOCAL_SIZE + WF_LANE_WIDTH - 1) / WF_LANE_WIDTH * WF_LANE_WIDTH)
 
 /* The fields of the structure of arrays, each WF_LANE_CAPACITY floats: the
- * BSDF query, the scatter's surface and light sample, then what the lanes
- * give back. A field of three holds x, y, z (or r, g, b) in turn; masks and
- * the light's segment end are held as floats. */
+ * BSDF query, the scatter's surface and the light sample's numbers or the
+ * sample, then what the lanes give back. A field of three holds x, y, z (or
+ * r, g, b) in turn; masks and the light's segment end are held as floats. */
 enum LaneField {
     WF_LANE_BASE, WF_LANE_METALLIC = WF_LANE_BASE + 3, WF_LANE_ROUGHNESS, WF_LANE_SPECULAR, WF_LANE_SPECULAR_COLOR,
     WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_WO, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
     WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
     WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
     WF_LANE_FRAME_Y = WF_LANE_FRAME_X + 3, WF_LANE_FRAME_Z = WF_LANE_FRAME_Y + 3,
-    WF_LANE_THROUGHPUT = WF_LANE_FRAME_Z + 3, WF_LANE_LIGHT = WF_LANE_THROUGHPUT + 3, WF_LANE_LIGHT_WI,
+    WF_LANE_THROUGHPUT = WF_LANE_FRAME_Z + 3, WF_LANE_LIGHT = WF_LANE_THROUGHPUT + 3, WF_LANE_LIGHT_U,
+    WF_LANE_LIGHT_WI = WF_LANE_LIGHT_U + 4, /* the light's numbers (WF_LIGHTS_IN_LANES), else its sample: */
     WF_LANE_LIGHT_RADIANCE = WF_LANE_LIGHT_WI + 3, WF_LANE_LIGHT_PDF = WF_LANE_LIGHT_RADIANCE + 3,
     WF_LANE_LIGHT_DELTA, WF_LANE_LIGHT_SEGMENT_END, WF_LANE_LIGHT_POINT,
     WF_LANE_LIGHT_POINT_ERROR = WF_LANE_LIGHT_POINT + 3, WF_LANE_LIGHT_NORMAL = WF_LANE_LIGHT_POINT_ERROR + 3,
@@ -68,7 +79,6 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     lanes_put3(soa, WF_LANE_SPECULAR_COLOR, at, q->params.specular_color);
     WF_LANE_AT(soa, WF_LANE_IOR, at) = q->params.ior;
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
-    lanes_put3(soa, WF_LANE_WI_LIGHT, at, q->wi_light);
     lanes_put3(soa, WF_LANE_U, at, q->u);
     lanes_put3(soa, WF_LANE_POSITION, at, c->position);
     lanes_put3(soa, WF_LANE_POSITION_ERROR, at, c->position_error);
@@ -78,6 +88,14 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     lanes_put3(soa, WF_LANE_FRAME_Z, at, c->frame.z);
     lanes_put3(soa, WF_LANE_THROUGHPUT, at, c->throughput);
     WF_LANE_AT(soa, WF_LANE_LIGHT, at) = q->light ? 1.0f : 0.0f;
+#if WF_LIGHTS_IN_LANES
+    const float4 u = q->light ? c->light_u : (float4)(0.0f); /* any numbers serve a path without a light sample */
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U, at) = u.x;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 1, at) = u.y;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 2, at) = u.z;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at) = u.w;
+#else
+    lanes_put3(soa, WF_LANE_WI_LIGHT, at, q->wi_light);
     lanes_put3(soa, WF_LANE_LIGHT_WI, at, c->light.wi);
     lanes_put3(soa, WF_LANE_LIGHT_RADIANCE, at, c->light.radiance);
     WF_LANE_AT(soa, WF_LANE_LIGHT_PDF, at) = c->light.pdf;
@@ -86,6 +104,7 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     lanes_put3(soa, WF_LANE_LIGHT_POINT, at, c->light.point);
     lanes_put3(soa, WF_LANE_LIGHT_POINT_ERROR, at, c->light.point_error);
     lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, c->light.normal);
+#endif
 }
 
 /* The scatter of the path put at `at`, as scatter_x1 gives it. */
@@ -130,8 +149,8 @@ WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at) {
  * BSDF core and the scatter. A run that ends past the last path first repeats
  * its first path's inputs into the empty lanes, so that no lane reads what
  * nobody wrote. */
-WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, uint hemisphere, uint light_sampling,
-                               float reach) {
+WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, const RenderParams* params,
+                               const Scene* scene) {
     for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
         for (uint f = 0; f < WF_LANE_INPUTS; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
     WF_LANE_X(OpaqueParams) p;
@@ -142,13 +161,7 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, uint
     p.specular_color = WF_LANE_LOAD_RGB(WF_LANE_SPECULAR_COLOR, first);
     p.ior = WF_LANE_LOAD(WF_LANE_IOR, first);
     const WF_CAT(lvec, WF_LANE_WIDTH) wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
-    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_LOAD_VEC(WF_LANE_WI_LIGHT, first);
     const WF_CAT(lvec, WF_LANE_WIDTH) u = WF_LANE_LOAD_VEC(WF_LANE_U, first);
-    const WF_LANE_X(OpaqueAtWo) at = WF_LANE_X(opaque_at_wo)(&p, wo);
-    WF_LANE_X(ScatterAnswer) a;
-    a.f_light = WF_LANE_X(opaque_eval_pdf)(&p, &at, wo, wi_light, hemisphere, &a.pdf_light);
-    a.f = WF_LANE_X(opaque_sample)(&p, &at, wo, u, hemisphere, &a.wi, &a.pdf, &a.delta);
-
     WF_LANE_X(ScatterSurface) s;
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
     s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);
@@ -159,17 +172,33 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, uint
     s.throughput = WF_LANE_LOAD_RGB(WF_LANE_THROUGHPUT, first);
     WF_LANE_X(ScatterLight) l;
     l.present = WF_LANE_MASK(WF_LANE_LIGHT, first);
-    l.wi = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_WI, first);
+#if WF_LIGHTS_IN_LANES
+    /* shade_light's sample and direction, in lanes. */
+    const WF_LANE_REAL u_index = WF_LANE_LOAD(WF_LANE_LIGHT_U, first), u_alias = WF_LANE_LOAD(WF_LANE_LIGHT_U + 3, first);
+    const WF_CAT(lint, WF_LANE_WIDTH) entry = WF_LANE_X(choose_light)(scene->lights, params->light_count, u_index, u_alias);
+    l.sample = WF_LANE_X(sample_emissive_triangle)(scene, entry, s.position, WF_LANE_LOAD(WF_LANE_LIGHT_U + 1, first),
+                                                   WF_LANE_LOAD(WF_LANE_LIGHT_U + 2, first));
+    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_X(vec_in_frame)(l.sample.wi, s.frame_x, s.frame_y, s.frame_z);
+#else
+    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_LOAD_VEC(WF_LANE_WI_LIGHT, first);
+    l.sample.wi = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_WI, first);
+    l.sample.radiance = WF_LANE_LOAD_RGB(WF_LANE_LIGHT_RADIANCE, first);
+    l.sample.pdf = WF_LANE_LOAD(WF_LANE_LIGHT_PDF, first);
+    l.sample.delta = WF_LANE_MASK(WF_LANE_LIGHT_DELTA, first);
+    l.sample.segment_end = WF_CAT(convert_int, WF_LANE_WIDTH)(WF_LANE_LOAD(WF_LANE_LIGHT_SEGMENT_END, first));
+    l.sample.point = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT, first);
+    l.sample.point_error = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT_ERROR, first);
+    l.sample.normal = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_NORMAL, first);
+#endif
     l.wi_local_z = wi_light.z;
-    l.radiance = WF_LANE_LOAD_RGB(WF_LANE_LIGHT_RADIANCE, first);
-    l.pdf = WF_LANE_LOAD(WF_LANE_LIGHT_PDF, first);
-    l.delta = WF_LANE_MASK(WF_LANE_LIGHT_DELTA, first);
-    l.segment_end = WF_CAT(convert_int, WF_LANE_WIDTH)(WF_LANE_LOAD(WF_LANE_LIGHT_SEGMENT_END, first));
-    l.point = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT, first);
-    l.point_error = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT_ERROR, first);
-    l.normal = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_NORMAL, first);
 
-    const WF_LANE_X(Scatter) out = WF_LANE_X(scatter)(&s, &l, &a, light_sampling, reach);
+    const WF_LANE_X(OpaqueAtWo) at = WF_LANE_X(opaque_at_wo)(&p, wo);
+    WF_LANE_X(ScatterAnswer) a;
+    a.f_light = WF_LANE_X(opaque_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
+    a.f = WF_LANE_X(opaque_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
+
+    const WF_LANE_X(Scatter) out =
+        WF_LANE_X(scatter)(&s, &l, &a, params->light_sampling, 2.0f * params->scene_diameter);
     WF_LANE_STORE(WF_LANE_FROM_MASK(out.shadow), WF_LANE_SHADOW, first);
     WF_LANE_STORE_VEC(out.shadow_origin, WF_LANE_SHADOW_ORIGIN, first);
     WF_LANE_STORE_VEC(out.shadow_segment, WF_LANE_SHADOW_SEGMENT, first);

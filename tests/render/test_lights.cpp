@@ -1,10 +1,12 @@
 // test_lights.cpp — every kind of light through the whole renderer, against
 // closed forms: an open floor lit by an environment (constant, and a map with
-// a sun and a gradient), by a point light and by a directional light, under
+// a sun and a gradient), by a point light, an emissive square and a
+// directional light, under
 // each --light-sampling technique. The floor is Lambertian (specular 0) and
 // sees nothing but the light, so its radiance is albedo/π times its irradiance
 // exactly: a biased MIS weight, a pdf off by a Jacobian, or a light-choice
 // probability left out shows as a wrong image.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -162,6 +164,60 @@ TEST(Lights, PointLightGivesInverseSquareIrradianceUnderEveryTechnique) {
                               std::to_string(error));
         EXPECT_LT(error, 1e-4) << kTechniqueNames[t];
         (void)camera;
+    }
+}
+
+// A square of radiance L facing down over the floor, off to the side of the
+// camera's view: the floor's irradiance is Lambert's closed form for a
+// polygon, E = L/2 Σ β_i (n · u_i), over its edges (β_i the angle the edge
+// subtends at the point, u_i the unit normal of the plane through it and the
+// point). Next-event estimation samples the square by area and converts to
+// solid angle; BRDF sampling finds it by chance; MIS weighs the two: a pdf off
+// by any factor, or a Jacobian left out, moves the NEE and MIS images off the
+// closed form, and BRDF sampling checks the scene itself.
+double square_irradiance(const glm::dvec3 corners[4], glm::dvec3 point, double radiance) {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec3 a = glm::normalize(corners[i] - point), b = glm::normalize(corners[(i + 1) % 4] - point);
+        const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+        sum += angle * glm::normalize(glm::cross(a, b)).y; // n = +y, the floor's
+    }
+    return radiance / 2.0 * std::fabs(sum);
+}
+
+TEST(Lights, EmissiveSquareGivesItsPolygonIrradianceUnderEveryTechnique) {
+    const float radiance = 20.0f;
+    const glm::vec3 corners[4] = {{0.15f, 0.5f, -0.15f}, {0.45f, 0.5f, -0.15f}, {0.45f, 0.5f, 0.15f},
+                                  {0.15f, 0.5f, 0.15f}}; // counter-clockwise seen from below: it faces down
+    Scene scene = open_floor();
+    test::add_quad(scene, corners[0], corners[1], corners[2], corners[3],
+                   test::add_material(scene, glm::vec3(0.0f), glm::vec3(radiance), false));
+    const glm::dvec3 exact_corners[4] = {corners[0], corners[1], corners[2], corners[3]};
+    for (int t = 0; t < 3; ++t) {
+        const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
+        EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
+        // Each pixel's mean over a 4 x 4 grid of points of its footprint,
+        // where the camera's rays meet the floor (as in the point light's test).
+        FilmReadout expected = uniform_image(out.film, 0.0);
+        const double half = std::tan(0.25);
+        for (uint32_t j = 0; j < kSide; ++j)
+            for (uint32_t i = 0; i < kSide; ++i) {
+                double value = 0.0;
+                for (int sj = 0; sj < 4; ++sj)
+                    for (int si = 0; si < 4; ++si) {
+                        const double x = half * (2.0 * (i + (si + 0.5) / 4) / kSide - 1.0);
+                        const double z = half * (2.0 * (j + (sj + 0.5) / 4) / kSide - 1.0);
+                        value += kAlbedo / kPi * square_irradiance(exact_corners, {x, 0.0, z}, radiance) / 16.0;
+                    }
+                for (int c = 0; c < 3; ++c) expected.mean.rgb[3 * (size_t{j} * kSide + i) + c] = float(value);
+            }
+        const double z = test::max_block_z(out.film, expected, 8);
+        const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
+        test::report_measured(std::string("emissive square, ") + kTechniqueNames[t] + ": mean " +
+                              std::to_string(mean) + " (closed form " + std::to_string(exact) +
+                              "), max block |z| " + std::to_string(z));
+        EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << kTechniqueNames[t];
+        EXPECT_NEAR(mean, exact, 2e-2 * exact) << kTechniqueNames[t];
     }
 }
 
