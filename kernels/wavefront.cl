@@ -179,6 +179,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             uint slot[WF_TRACE_WIDTH];
             const uint count = local_slots_to_trace(&queue[WF_QUEUE_EXTEND], lid, slot);
             if (count > 0u) intersect_paths(&path, slot, count, &scene);
+            for (uint i = 0u; i < count; ++i) prefetch_surface(&scene, path_hit_triangle(&path, slot[i]));
         }
 #ifdef WF_GROUP_LANES
         if (lid == 0) lanes_length = 0u;

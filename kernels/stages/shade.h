@@ -63,6 +63,24 @@ WF_INLINE SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, f
     return s;
 }
 
+/* What shade_surface reads of a hit triangle beyond its corners, which the
+ * traversal that found it has just read: asked for early by a schedule that
+ * knows its hits before it shades them (the group schedule, after each
+ * intersect region), so that a work-group's misses overlap instead of each
+ * stalling its path's shading in turn. On a scene larger than the caches the
+ * shading normals' miss was most of surface_at's time. */
+WF_INLINE void prefetch_surface(const Scene* scene, int triangle) {
+    if (triangle < 0) return;
+    __global const char* normals = (__global const char*)&scene->normals[triangle];
+    WF_PREFETCH(normals);
+    WF_PREFETCH(normals + sizeof(TriangleNormals) - 1);
+#if WF_HAS_TEXTURES
+    __global const char* texcoords = (__global const char*)&scene->texcoords[triangle];
+    WF_PREFETCH(texcoords);
+    WF_PREFETCH(texcoords + sizeof(TriangleTexcoords) - 1);
+#endif
+}
+
 /* The weight of emission that BRDF sampling found, given the density with
  * which light sampling would have found it. A camera ray or a Dirac bounce
  * (pdf_bsdf 0) sees emitters whatever the technique: no light sample could. */
