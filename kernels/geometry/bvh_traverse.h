@@ -93,7 +93,10 @@
  * goes, where eight at once held forty-eight planes in registers; and a
  * leaf's triangles one at a time (triangle_intersect.h), each against the
  * window the ones before it left: a hit beyond the window cannot change the
- * answer (above), so that too is only a saving.
+ * answer (above), so that too is only a saving. Its selection keeps a hit's
+ * t and triangle, not u and v: traversal_hit tests the one triangle selected
+ * again at the end, and the same test of the same triangle gives the same
+ * bits.
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -242,8 +245,15 @@ WF_FORCE_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
 WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
     RayHit h;
     h.t = hit->t;
+#if WF_GPU_TRAVERSAL
+    /* Left 0 until traversal_hit: the barycentrics of two hits, kept
+     * through a GPU's whole traversal, held 10 registers of intersect. */
+    h.u = 0.0f;
+    h.v = 0.0f;
+#else
     h.u = hit->u;
     h.v = hit->v;
+#endif
     h.triangle = index;
     if (comes_before(h.t, index, &s->closest)) s->closest = h;
     if (emitter && comes_before(h.t, index, &s->emitter)) s->emitter = h;
@@ -466,8 +476,25 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->child = nodes->child[0];
 }
 
+#if WF_GPU_TRAVERSAL
+/* selected_hit with the u and v that a GPU's selection leaves 0: the one
+ * selected triangle tested again, which gives the bits its first test gave. */
+WF_INLINE RayHit traversal_hit(const Traversal* t, WF_GLOBAL const TriangleBlock* triangles) {
+    RayHit h = selected_hit(&t->selection);
+    if (h.triangle >= 0) {
+        const TriangleLanes_x1 one = block_lane(&t->ray, triangles + h.triangle / WF_BLOCK_LANES,
+                                                (uint32_t)h.triangle % WF_BLOCK_LANES);
+        TriangleHit hit;
+        intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->t_max, &hit);
+        h.u = hit.u;
+        h.v = hit.v;
+    }
+    return h;
+}
+#endif
+
 /* One leaf or one node visit; returns 1 once the answer is
- * selected_hit(&t->selection): every child visited, or, when
+ * selected_hit(&t->selection) (a GPU's: traversal_hit): every child visited, or, when
  * stop_at_first_hit is set, the first hit found. */
 WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
                                     WF_GLOBAL const TriangleBlock* triangles,
@@ -581,7 +608,11 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     traversal_start(&t, nodes, origin, direction, t_max);
     while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG)) {
     }
+#if WF_GPU_TRAVERSAL
+    return traversal_hit(&t, triangles);
+#else
     return selected_hit(&t.selection);
+#endif
 }
 
 /* Two rays' bvh_traverse, a step of each in turn (geometry/trace_width.h
@@ -605,8 +636,13 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
     }
     while (!a_done) a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
     while (!b_done) b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+#if WF_GPU_TRAVERSAL
+    hit[0] = traversal_hit(&a, triangles);
+    hit[1] = traversal_hit(&b, triangles);
+#else
     hit[0] = selected_hit(&a.selection);
     hit[1] = selected_hit(&b.selection);
+#endif
 }
 
 /* bvh_traverse of `count` rays, 1 to WF_TRACE_WIDTH, into hit[0 .. count). */
