@@ -514,8 +514,15 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
             TriangleHit hit;
             if (!intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->selection.window_end, &hit)) continue;
             if (!WF_HIT_PASSES(triangles, (int32_t)position, &hit)) continue;
+            if (stop_at_first_hit) {
+                /* The answer, as select_hit would select it alone; written
+                 * here, the rest of the selection is not kept through a shadow
+                 * ray's traversal, where it held 22 registers. */
+                t->selection.closest.t = hit.t;
+                t->selection.closest.triangle = (int32_t)position;
+                return 1;
+            }
             select_hit(&t->selection, &hit, (int32_t)position, b->light[lane] >= 0);
-            if (stop_at_first_hit) return 1;
         }
 #else
         /* One or two blocks, four triangles at a time. */
