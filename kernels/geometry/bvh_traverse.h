@@ -81,9 +81,9 @@
  * so it holds at most one entry per level of the path. It lives in the
  * work-group's local memory (Aila and Laine 2009), WF_GPU_STACK_SIZE groups a
  * ray, where 64 children in private memory took scratch. A full stack drops
- * its bottom group, and once the rest is done, rebuild_stack walks again
- * from the top of the tree to the last slot taken, pushing at each node the
- * slots that come after the path's in that order: the dropped groups, less
+ * its bottom group, and once the rest is done, a walk (rebuild_step) goes
+ * again from the top of the tree to the last slot taken, pushing at each
+ * node the slots that come after the path's in that order: the dropped groups, less
  * what the window now culls (a shrunk window culls a suffix of the nearest-
  * first order, so the path's slot keeps its place). The walk finds the path
  * from node indices alone (host/bvh/bvh_builder.cpp lays each subtree out
@@ -373,7 +373,8 @@ typedef struct Traversal {
 #if WF_GPU_TRAVERSAL
     uint32_t node; /* the node `child` was taken from (0: none yet), */
     uint32_t slot; /* and its slot there */
-    int lost;      /* a full stack has dropped a group since the last rebuild */
+    int lost;      /* bit 0: a full stack has dropped a group since the last rebuild;
+                      bit 1: `child` is a node of the rebuild's walk (rebuild_step) */
 #endif
 } Traversal;
 
@@ -402,7 +403,7 @@ WF_FORCE_INLINE void push_group(Traversal* t, const TraversalStack* stack, uint3
             stack->slots[(i - 1) * WF_TRAVERSAL_LOCAL_SIZE] = stack->slots[i * WF_TRAVERSAL_LOCAL_SIZE];
         }
         --t->stack_size;
-        t->lost = 1;
+        t->lost |= 1;
     }
     stack->node[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = node;
     stack->slots[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = (uchar)slots;
@@ -424,32 +425,36 @@ WF_FORCE_INLINE uint32_t slots_after(uint32_t met, uint32_t first, uint32_t take
     return met & ~(1u << first) & (taken == first ? ~0u : (1u << taken) - 1u);
 }
 
-/* Pushes again every group that the path from the top of the tree to the
- * last slot taken (t->node, t->slot) still holds: the groups a full stack
- * dropped, now culled by the present window. Interior children follow
- * their node in slot order, each subtree's nodes consecutive
- * (host/bvh/bvh_builder.cpp), so the path's slot at a node is that of its
- * greatest interior child at or below t->node. */
-WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
-                                   int any_hit) {
-    t->lost = 0;
-    for (uint32_t n = nodes->child[0];;) {
-        WF_GLOBAL const BvhNode* node = nodes + n;
-        uint32_t first;
-        const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, any_hit, &first);
-        uint32_t taken = t->slot, below = 0u;
-        if (n != t->node)
-            for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
-                const uint32_t c = node->child[i];
-                if (c != 0u && !(c & WF_BVH_LEAF) && c <= t->node && c > below) {
-                    below = c;
-                    taken = i;
-                }
+/* One node of the rebuild's walk from the top of the tree to the last slot
+ * taken (t->node, t->slot), which pushes again every group that path still
+ * holds: the groups a full stack dropped, now culled by the present window.
+ * `met` and `first` are node `n`'s, as child_slots_met gives them. Interior
+ * children follow their node in slot order, each subtree's nodes
+ * consecutive (host/bvh/bvh_builder.cpp), so the path's slot at a node is
+ * that of its greatest interior child at or below t->node. Returns the next
+ * node of the walk, 0 at its end. */
+WF_FORCE_INLINE uint32_t rebuild_step(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* node,
+                                      uint32_t n, uint32_t met, uint32_t first) {
+    uint32_t taken = t->slot, below = 0u;
+    if (n != t->node)
+        for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
+            const uint32_t c = node->child[i];
+            if (c != 0u && !(c & WF_BVH_LEAF) && c <= t->node && c > below) {
+                below = c;
+                taken = i;
             }
-        const uint32_t pending = slots_after(met, first, taken);
-        if (pending != 0u) push_group(t, stack, n, pending);
-        if (n == t->node) return;
-        n = node->child[taken];
+        }
+    const uint32_t pending = slots_after(met, first, taken);
+    if (pending != 0u) push_group(t, stack, n, pending);
+    return n == t->node ? 0u : node->child[taken];
+}
+
+/* The whole walk at once, as an any-hit query rebuilds its stack. */
+WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* nodes) {
+    for (uint32_t n = nodes->child[0]; n != 0u;) {
+        uint32_t first;
+        const uint32_t met = child_slots_met(&t->box, nodes + n, t->selection.window_end, 1, &first);
+        n = rebuild_step(t, stack, nodes + n, n, met, first);
     }
 }
 #else
@@ -546,7 +551,14 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
 #if WF_GPU_TRAVERSAL
         uint32_t next;
         const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, stop_at_first_hit, &next);
-        if (met != 0u) { /* on to the nearest (see above), the others pushed as one group */
+        if (!stop_at_first_hit && (t->lost & 2)) { /* a node of the walk (below), tested as a visit's */
+            const uint32_t walk = rebuild_step(t, stack, node, child, met, next);
+            if (walk != 0u) {
+                t->child = walk;
+                return 0;
+            }
+            t->lost &= 1;
+        } else if (met != 0u) { /* on to the nearest (see above), the others pushed as one group */
             if (met != 1u << next) push_group(t, stack, child, met & ~(1u << next));
             take_slot(t, nodes, child, next);
             return 0;
@@ -579,7 +591,17 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
 #if WF_GPU_TRAVERSAL
     if (t->stack_size == 0) {
         if (!t->lost) return 1;
-        rebuild_stack(t, stack, nodes, stop_at_first_hit);
+        /* A closest-hit query walks a node a step, so that one box test serves
+         * visits and walk (12 registers of intersect); an any-hit query walks
+         * at once, its second box test costing fewer registers than a walk
+         * kept across steps (4-6 of intersect_shadow). */
+        if (!stop_at_first_hit) {
+            t->lost = 2;
+            t->child = nodes->child[0];
+            return 0;
+        }
+        t->lost = 0;
+        rebuild_stack(t, stack, nodes);
         if (t->stack_size == 0) return 1;
     }
     /* The top group's highest slot; the group stays while it has others. */
