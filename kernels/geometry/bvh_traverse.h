@@ -83,9 +83,9 @@
  * ray, where 64 children in private memory took scratch. A full stack drops
  * its bottom group, and once the rest is done, a walk (rebuild_step) goes
  * again from the top of the tree to the last slot taken, pushing at each
- * node the slots that come after the path's in that order: the dropped groups, less
- * what the window now culls (a shrunk window culls a suffix of the nearest-
- * first order, so the path's slot keeps its place). The walk finds the path
+ * node the slots that come after the path's in that order: the dropped
+ * groups, less what the window now culls (a shrunk window culls a suffix of
+ * the nearest-first order, so the path's slot keeps its place). The walk finds the path
  * from node indices alone (host/bvh/bvh_builder.cpp lays each subtree out
  * after its node, children in slot order). It drops no popped child by its
  * entry: culling is only ever a saving, so the hits are the same. It tests a
