@@ -81,11 +81,11 @@
  * so it holds at most one entry per level of the path. It lives in the
  * work-group's local memory (Aila and Laine 2009), WF_GPU_STACK_SIZE groups a
  * ray, where 64 children in private memory took scratch. A full stack drops
- * its bottom group, and once the rest is done, rebuild_stack walks again
- * from the top of the tree to the last slot taken, pushing at each node the
- * slots that come after the path's in that order: the dropped groups, less
- * what the window now culls (a shrunk window culls a suffix of the nearest-
- * first order, so the path's slot keeps its place). The walk finds the path
+ * its bottom group, and once the rest is done, a walk (rebuild_step) goes
+ * again from the top of the tree to the last slot taken, pushing at each
+ * node the slots that come after the path's in that order: the dropped
+ * groups, less what the window now culls (a shrunk window culls a suffix of
+ * the nearest-first order, so the path's slot keeps its place). The walk finds the path
  * from node indices alone (host/bvh/bvh_builder.cpp lays each subtree out
  * after its node, children in slot order). It drops no popped child by its
  * entry: culling is only ever a saving, so the hits are the same. It tests a
@@ -93,7 +93,10 @@
  * goes, where eight at once held forty-eight planes in registers; and a
  * leaf's triangles one at a time (triangle_intersect.h), each against the
  * window the ones before it left: a hit beyond the window cannot change the
- * answer (above), so that too is only a saving.
+ * answer (above), so that too is only a saving. Its selection keeps a hit's
+ * t and triangle, not u and v: traversal_hit tests the one triangle selected
+ * again at the end, and the same test of the same triangle gives the same
+ * bits.
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
@@ -242,8 +245,15 @@ WF_FORCE_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
 WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
     RayHit h;
     h.t = hit->t;
+#if WF_GPU_TRAVERSAL
+    /* Left 0 until traversal_hit: the barycentrics of two hits, kept
+     * through a GPU's whole traversal, held 10 registers of intersect. */
+    h.u = 0.0f;
+    h.v = 0.0f;
+#else
     h.u = hit->u;
     h.v = hit->v;
+#endif
     h.triangle = index;
     if (comes_before(h.t, index, &s->closest)) s->closest = h;
     if (emitter && comes_before(h.t, index, &s->emitter)) s->emitter = h;
@@ -363,7 +373,8 @@ typedef struct Traversal {
 #if WF_GPU_TRAVERSAL
     uint32_t node; /* the node `child` was taken from (0: none yet), */
     uint32_t slot; /* and its slot there */
-    int lost;      /* a full stack has dropped a group since the last rebuild */
+    int lost;      /* bit 0: a full stack has dropped a group since the last rebuild;
+                      bit 1: `child` is a node of the rebuild's walk (rebuild_step) */
 #endif
 } Traversal;
 
@@ -392,7 +403,7 @@ WF_FORCE_INLINE void push_group(Traversal* t, const TraversalStack* stack, uint3
             stack->slots[(i - 1) * WF_TRAVERSAL_LOCAL_SIZE] = stack->slots[i * WF_TRAVERSAL_LOCAL_SIZE];
         }
         --t->stack_size;
-        t->lost = 1;
+        t->lost |= 1;
     }
     stack->node[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = node;
     stack->slots[t->stack_size * WF_TRAVERSAL_LOCAL_SIZE] = (uchar)slots;
@@ -414,32 +425,36 @@ WF_FORCE_INLINE uint32_t slots_after(uint32_t met, uint32_t first, uint32_t take
     return met & ~(1u << first) & (taken == first ? ~0u : (1u << taken) - 1u);
 }
 
-/* Pushes again every group that the path from the top of the tree to the
- * last slot taken (t->node, t->slot) still holds: the groups a full stack
- * dropped, now culled by the present window. Interior children follow
- * their node in slot order, each subtree's nodes consecutive
- * (host/bvh/bvh_builder.cpp), so the path's slot at a node is that of its
- * greatest interior child at or below t->node. */
-WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
-                                   int any_hit) {
-    t->lost = 0;
-    for (uint32_t n = nodes->child[0];;) {
-        WF_GLOBAL const BvhNode* node = nodes + n;
-        uint32_t first;
-        const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, any_hit, &first);
-        uint32_t taken = t->slot, below = 0u;
-        if (n != t->node)
-            for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
-                const uint32_t c = node->child[i];
-                if (c != 0u && !(c & WF_BVH_LEAF) && c <= t->node && c > below) {
-                    below = c;
-                    taken = i;
-                }
+/* One node of the rebuild's walk from the top of the tree to the last slot
+ * taken (t->node, t->slot), which pushes again every group that path still
+ * holds: the groups a full stack dropped, now culled by the present window.
+ * `met` and `first` are node `n`'s, as child_slots_met gives them. Interior
+ * children follow their node in slot order, each subtree's nodes
+ * consecutive (host/bvh/bvh_builder.cpp), so the path's slot at a node is
+ * that of its greatest interior child at or below t->node. Returns the next
+ * node of the walk, 0 at its end. */
+WF_FORCE_INLINE uint32_t rebuild_step(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* node,
+                                      uint32_t n, uint32_t met, uint32_t first) {
+    uint32_t taken = t->slot, below = 0u;
+    if (n != t->node)
+        for (uint32_t i = 0u; i < WF_BVH_WIDTH; ++i) {
+            const uint32_t c = node->child[i];
+            if (c != 0u && !(c & WF_BVH_LEAF) && c <= t->node && c > below) {
+                below = c;
+                taken = i;
             }
-        const uint32_t pending = slots_after(met, first, taken);
-        if (pending != 0u) push_group(t, stack, n, pending);
-        if (n == t->node) return;
-        n = node->child[taken];
+        }
+    const uint32_t pending = slots_after(met, first, taken);
+    if (pending != 0u) push_group(t, stack, n, pending);
+    return n == t->node ? 0u : node->child[taken];
+}
+
+/* The whole walk at once, as an any-hit query rebuilds its stack. */
+WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF_GLOBAL const BvhNode* nodes) {
+    for (uint32_t n = nodes->child[0]; n != 0u;) {
+        uint32_t first;
+        const uint32_t met = child_slots_met(&t->box, nodes + n, t->selection.window_end, 1, &first);
+        n = rebuild_step(t, stack, nodes + n, n, met, first);
     }
 }
 #else
@@ -466,8 +481,25 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->child = nodes->child[0];
 }
 
+#if WF_GPU_TRAVERSAL
+/* selected_hit with the u and v that a GPU's selection leaves 0: the one
+ * selected triangle tested again, which gives the bits its first test gave. */
+WF_INLINE RayHit traversal_hit(const Traversal* t, WF_GLOBAL const TriangleBlock* triangles) {
+    RayHit h = selected_hit(&t->selection);
+    if (h.triangle >= 0) {
+        const TriangleLanes_x1 one = block_lane(&t->ray, triangles + h.triangle / WF_BLOCK_LANES,
+                                                (uint32_t)h.triangle % WF_BLOCK_LANES);
+        TriangleHit hit;
+        intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->t_max, &hit);
+        h.u = hit.u;
+        h.v = hit.v;
+    }
+    return h;
+}
+#endif
+
 /* One leaf or one node visit; returns 1 once the answer is
- * selected_hit(&t->selection): every child visited, or, when
+ * selected_hit(&t->selection) (a GPU's: traversal_hit): every child visited, or, when
  * stop_at_first_hit is set, the first hit found. */
 WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
                                     WF_GLOBAL const TriangleBlock* triangles,
@@ -487,8 +519,15 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
             TriangleHit hit;
             if (!intersect_triangles_x1(&t->ray, &one, 1u, t->t_max, t->selection.window_end, &hit)) continue;
             if (!WF_HIT_PASSES(triangles, (int32_t)position, &hit)) continue;
+            if (stop_at_first_hit) {
+                /* The answer, as select_hit would select it alone; written
+                 * here, the rest of the selection is not kept through a shadow
+                 * ray's traversal, where it held 22 registers. */
+                t->selection.closest.t = hit.t;
+                t->selection.closest.triangle = (int32_t)position;
+                return 1;
+            }
             select_hit(&t->selection, &hit, (int32_t)position, b->light[lane] >= 0);
-            if (stop_at_first_hit) return 1;
         }
 #else
         /* One or two blocks, four triangles at a time. */
@@ -512,7 +551,14 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
 #if WF_GPU_TRAVERSAL
         uint32_t next;
         const uint32_t met = child_slots_met(&t->box, node, t->selection.window_end, stop_at_first_hit, &next);
-        if (met != 0u) { /* on to the nearest (see above), the others pushed as one group */
+        if (!stop_at_first_hit && (t->lost & 2)) { /* a node of the walk (below), tested as a visit's */
+            const uint32_t walk = rebuild_step(t, stack, node, child, met, next);
+            if (walk != 0u) {
+                t->child = walk;
+                return 0;
+            }
+            t->lost &= 1;
+        } else if (met != 0u) { /* on to the nearest (see above), the others pushed as one group */
             if (met != 1u << next) push_group(t, stack, child, met & ~(1u << next));
             take_slot(t, nodes, child, next);
             return 0;
@@ -545,7 +591,17 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
 #if WF_GPU_TRAVERSAL
     if (t->stack_size == 0) {
         if (!t->lost) return 1;
-        rebuild_stack(t, stack, nodes, stop_at_first_hit);
+        /* A closest-hit query walks a node a step, so that one box test serves
+         * visits and walk (12 registers of intersect); an any-hit query walks
+         * at once, its second box test costing fewer registers than a walk
+         * kept across steps (4-6 of intersect_shadow). */
+        if (!stop_at_first_hit) {
+            t->lost = 2;
+            t->child = nodes->child[0];
+            return 0;
+        }
+        t->lost = 0;
+        rebuild_stack(t, stack, nodes);
         if (t->stack_size == 0) return 1;
     }
     /* The top group's highest slot; the group stays while it has others. */
@@ -581,7 +637,11 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     traversal_start(&t, nodes, origin, direction, t_max);
     while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG)) {
     }
+#if WF_GPU_TRAVERSAL
+    return traversal_hit(&t, triangles);
+#else
     return selected_hit(&t.selection);
+#endif
 }
 
 /* Two rays' bvh_traverse, a step of each in turn (geometry/trace_width.h
@@ -605,8 +665,13 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
     }
     while (!a_done) a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
     while (!b_done) b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+#if WF_GPU_TRAVERSAL
+    hit[0] = traversal_hit(&a, triangles);
+    hit[1] = traversal_hit(&b, triangles);
+#else
     hit[0] = selected_hit(&a.selection);
     hit[1] = selected_hit(&b.selection);
+#endif
 }
 
 /* bvh_traverse of `count` rays, 1 to WF_TRACE_WIDTH, into hit[0 .. count). */
