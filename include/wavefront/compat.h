@@ -5,7 +5,7 @@
  * Shared code is written against this vocabulary: fixed-width integers, float2
  * with make_float2, float3 with dot/cross/normalize/min/max, make_float3, float4
  * with make_float4, as_uint/as_float, the scalar clamp, sqrt, sin, cos, sinpi,
- * cospi, acos, atan2, floor, pow, exp, log and copysign, clz, and WF_GLOBAL for the address space of
+ * cospi, acos, atan2, floor, pow, exp, exp2, log, log2 and copysign, clz, and WF_GLOBAL for the address space of
  * scene buffers, WF_CONSTANT for tables at program scope. For SIMD inside a
  * work-item (the BVH traversal): float4 and
  * int4 lanes with their arithmetic, max and fabs, the relational
@@ -105,8 +105,10 @@ using std::atan2;
 using std::copysign;
 using std::cos;
 using std::exp;
+using std::exp2;
 using std::floor;
 using std::log;
+using std::log2;
 using std::pow;
 using std::sin;
 using std::sqrt;
