@@ -30,6 +30,12 @@ WF_INLINE void start_path_radiance(PathState* path, uint slot, uint samples_star
     path->radiance[slot] = (float4)(0.0f, 0.0f, 0.0f, as_float(samples_started));
 }
 WF_INLINE int path_hit_triangle(const PathState* path, uint slot) { return as_int(path->hit[slot].w); }
+/* The continuation ray, and the number roulette will draw for it. */
+WF_INLINE void set_path_ray(PathState* path, uint slot, float3 origin, float3 direction, float pdf, float roulette_u) {
+    path->ray_origin[slot] = (float4)(origin, roulette_u);
+    path->ray_direction[slot] = (float4)(direction, pdf);
+}
+WF_INLINE float path_roulette_number(const PathState* path, uint slot) { return path->ray_origin[slot].w; }
 WF_INLINE void set_path_hit(PathState* path, uint slot, float t, float u, float v, int triangle) {
     path->hit[slot] = (float4)(t, u, v, as_float(triangle));
 }

@@ -219,8 +219,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
 #ifdef WF_GROUP_LANES
             if (lane_at < WF_LANE_CAPACITY) {
-                const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at);
-                next = write_scatter(&path, slot, &scattered);
+                float roulette_u;
+                const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at, &roulette_u);
+                next = write_scatter(&path, slot, &scattered, roulette_u);
             }
 #else
             const uint next = shade_path(&path, &params, slot, &scene, &film);

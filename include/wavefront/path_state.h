@@ -23,7 +23,7 @@
  * and the pixel and sample index follow from the count of samples started.
  *   X(type, name, what-it-holds) */
 #define WF_PATH_STATE(X)                                                             \
-    X(float4, ray_origin, "xyz: origin of the ray to trace")                         \
+    X(float4, ray_origin, "xyz: origin of the ray to trace; w: the number roulette draws for it") \
     X(float4, ray_direction, "xyz: direction (unit); w: solid-angle pdf it was sampled with") \
     X(float4, hit, "closest hit: t, barycentric u, v; w: triangle as bits (-1 = miss)") \
     X(float4, throughput, "rgb: path throughput; w: bounces so far, 0 for a camera ray, as bits") \

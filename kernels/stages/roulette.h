@@ -11,7 +11,6 @@
 #include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
-#include "common/sample_values.h"
 
 /* Returns the queue the path goes to next: extension if it survives. */
 WF_INLINE uint roulette_path(PathState* path, const RenderParams* params, uint slot) {
@@ -19,12 +18,11 @@ WF_INLINE uint roulette_path(PathState* path, const RenderParams* params, uint s
     if (depth < params->roulette_depth) return WF_QUEUE_EXTEND;
     const float3 throughput = path->throughput[slot].xyz;
     const float q = min(params->roulette_cap, max(throughput.x, max(throughput.y, throughput.z)));
-    /* The fourth number of the BSDF group of the bounce that chose this ray;
-     * bsdf_sample uses the first three, so the choice to go on is independent
-     * of the direction (and of the throughput that direction gave). */
-    const PathSample current = current_sample(path, params, slot);
-    const float u = sample_values(params, current.pixel, current.sample, depth - 1u, WF_RNG_BSDF).w;
-    if (!(u < q)) return WF_QUEUE_FINISHED;
+    /* The fourth number of the BSDF group of the bounce that chose this ray,
+     * which shade handed on with it; bsdf_sample uses the first three, so the
+     * choice to go on is independent of the direction (and of the throughput
+     * that direction gave). */
+    if (!(path_roulette_number(path, slot) < q)) return WF_QUEUE_FINISHED;
     set_path_throughput(path, slot, throughput / q, depth);
     return WF_QUEUE_EXTEND;
 }

@@ -113,6 +113,7 @@ typedef struct ShadeContext {
     float3 throughput;
     uint depth;
     float4 light_u;    /* the light sample's numbers, where query.light */
+    float roulette_u;  /* the number roulette draws for the continuation */
     LightSample light; /* shade_light's, where query.light */
 } ShadeContext;
 
@@ -192,7 +193,12 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
      * lights are sampled whatever the technique: nothing else finds them. */
     q->light = params->light_count > 0u && !bsdf_is_delta(&q->params);
     if (q->light) c->light_u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-    q->u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF).xyz; /* .w: roulette's */
+    /* The BSDF group's fourth number is roulette's: drawn with the direction,
+     * independent of it, and handed on so that roulette need not draw the
+     * group again. */
+    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF);
+    q->u = u.xyz;
+    c->roulette_u = u.w;
     return true;
 }
 
@@ -245,7 +251,7 @@ WF_INLINE void scatter_inputs_x1(const ShadeContext* c, const BsdfAnswer* a, Sca
  * returns the queue the path goes to next. A path with a shadow ray waits
  * for it there (intersect_shadow sends it on), so no stage can overwrite the
  * pending ray whatever order the scheduler launches them in. */
-WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out) {
+WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out, float roulette_u) {
     const uint depth = path_depth(path, slot);
     if (out->shadow) {
         path->shadow_origin[slot] = (float4)(vec_to_float3(out->shadow_origin), 0.0f);
@@ -256,8 +262,8 @@ WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out) 
     }
     if (out->continues) {
         set_path_throughput(path, slot, rgb_to_float3(out->throughput), depth + 1u);
-        path->ray_origin[slot] = (float4)(vec_to_float3(out->ray_origin), 0.0f);
-        path->ray_direction[slot] = (float4)(vec_to_float3(out->ray_direction), out->ray_pdf);
+        set_path_ray(path, slot, vec_to_float3(out->ray_origin), vec_to_float3(out->ray_direction), out->ray_pdf,
+                     roulette_u);
     }
     return out->shadow ? WF_QUEUE_SHADOW : out->continues ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
 }
@@ -272,7 +278,7 @@ WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint s
     ScatterAnswer_x1 answer;
     scatter_inputs_x1(c, a, &s, &l, &answer);
     const Scatter_x1 out = scatter_x1(&s, &l, &answer, params->light_sampling, 2.0f * params->scene_diameter);
-    return write_scatter(path, slot, &out);
+    return write_scatter(path, slot, &out, c->roulette_u);
 }
 
 /* The whole stage for one path: surface, light sample, the core at width 1,

@@ -55,7 +55,9 @@ enum LaneField {
     WF_LANE_SHADOW = WF_LANE_INPUTS, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
     WF_LANE_SHADOW_LIGHT = WF_LANE_SHADOW_SEGMENT + 3, WF_LANE_CONTINUES = WF_LANE_SHADOW_LIGHT + 3,
     WF_LANE_NEXT_THROUGHPUT, WF_LANE_RAY_ORIGIN = WF_LANE_NEXT_THROUGHPUT + 3,
-    WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3, WF_LANE_FIELDS
+    WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3,
+    WF_LANE_ROULETTE_U, /* not the lanes': handed from shade_lanes_put to shade_lanes_get */
+    WF_LANE_FIELDS
 };
 
 #define WF_LANE_AT(soa, field, at) (soa)[(field) * WF_LANE_CAPACITY + (at)]
@@ -87,6 +89,7 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     lanes_put3(soa, WF_LANE_FRAME_Y, at, c->frame.y);
     lanes_put3(soa, WF_LANE_FRAME_Z, at, c->frame.z);
     lanes_put3(soa, WF_LANE_THROUGHPUT, at, c->throughput);
+    WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at) = c->roulette_u;
     WF_LANE_AT(soa, WF_LANE_LIGHT, at) = q->light ? 1.0f : 0.0f;
 #if WF_LIGHTS_IN_LANES
     const float4 u = q->light ? c->light_u : (float4)(0.0f); /* any numbers serve a path without a light sample */
@@ -107,8 +110,10 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
 #endif
 }
 
-/* The scatter of the path put at `at`, as scatter_x1 gives it. */
-WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at) {
+/* The scatter of the path put at `at`, as scatter_x1 gives it, and its
+ * roulette number. */
+WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* roulette_u) {
+    *roulette_u = WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at);
     Scatter_x1 out;
     out.shadow = WF_LANE_AT(soa, WF_LANE_SHADOW, at) != 0.0f;
     out.shadow_origin = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_ORIGIN, at));
