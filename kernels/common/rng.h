@@ -13,8 +13,8 @@
 /* Dimension groups used at each bounce; fixed, whatever the scene's features,
  * so that variants of the kernels draw the same numbers for the same path. */
 #define WF_RNG_CAMERA 0 /* x: pixel jitter x, y: pixel jitter y */
-#define WF_RNG_LIGHT 1  /* x: light choice, y, z: point on the light */
-#define WF_RNG_BSDF 2   /* x, y: direction; z: roulette */
+#define WF_RNG_LIGHT 1  /* x: light choice, w: its alias; y, z: point on the light */
+#define WF_RNG_BSDF 2   /* x: lobe; y, z: direction; w: roulette (handed on in ray_origin.w) */
 #define WF_RNG_GROUPS 3
 
 WF_INLINE uint4 pcg4d(uint4 v) {
