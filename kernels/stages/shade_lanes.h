@@ -151,7 +151,7 @@ WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* r
 #define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
 
 /* Shades the paths put at [first, first + WF_LANE_WIDTH) of `length`: the
- * BSDF core and the scatter. A run that ends past the last path first repeats
+ * light sample where the lanes take it, the BSDF core and the scatter. A run that ends past the last path first repeats
  * its first path's inputs into the empty lanes, so that no lane reads what
  * nobody wrote. */
 WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, const RenderParams* params,
@@ -179,8 +179,10 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     l.present = WF_LANE_MASK(WF_LANE_LIGHT, first);
 #if WF_LIGHTS_IN_LANES
     /* shade_light's sample and direction, in lanes. */
-    const WF_LANE_REAL u_index = WF_LANE_LOAD(WF_LANE_LIGHT_U, first), u_alias = WF_LANE_LOAD(WF_LANE_LIGHT_U + 3, first);
-    const WF_CAT(lint, WF_LANE_WIDTH) entry = WF_LANE_X(choose_light)(scene->lights, params->light_count, u_index, u_alias);
+    const WF_LANE_REAL u_index = WF_LANE_LOAD(WF_LANE_LIGHT_U, first);
+    const WF_LANE_REAL u_alias = WF_LANE_LOAD(WF_LANE_LIGHT_U + 3, first);
+    const WF_CAT(lint, WF_LANE_WIDTH) entry =
+        WF_LANE_X(choose_light)(scene->lights, params->light_count, u_index, u_alias);
     l.sample = WF_LANE_X(sample_emissive_triangle)(scene, entry, s.position, WF_LANE_LOAD(WF_LANE_LIGHT_U + 1, first),
                                                    WF_LANE_LOAD(WF_LANE_LIGHT_U + 2, first));
     const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_X(vec_in_frame)(l.sample.wi, s.frame_x, s.frame_y, s.frame_z);
