@@ -220,7 +220,8 @@ TEST(Stability, EdgeOnLightsAtGrazingViewAddNothing) {
 // r²/(A cos θ′) passes 1.8e19 long before cos θ′ reaches 0, and its square
 // overflows float. The weight must still be the power heuristic's value (1/2
 // for equal pdfs, 1 or 0 for lopsided ones), never Inf/Inf = NaN, and 0 where
-// this technique could not have made the sample.
+// this technique could not have made the sample: the emission weight's
+// power_heuristic and the scatter's lane form of it alike.
 const char* const kPowerHeuristicKernel = R"CLC(
 __kernel void weigh(__global const float2* pdfs, __global float* out) {
     const uint i = get_global_id(0);
@@ -249,6 +250,28 @@ TEST(Stability, MisWeightsHoldWherePdfSquaresOverflow) {
         const double a = pdfs[i].s[0], b = pdfs[i].s[1];
         const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0; // exact in double
         EXPECT_NEAR(weight[i], expected, 1e-6) << "pdfs " << a << ", " << b;
+    }
+
+    // The light sample's weight, which the scatter (kernels/stages/scatter.inc)
+    // computes a lane at a time, at widths 1 and 8: the same pdfs, padded to
+    // whole runs of eight lanes.
+    std::vector<cl_float2> lanes = pdfs;
+    while (lanes.size() % 8 != 0) lanes.push_back({{1.0f, 1.0f}});
+    const cl::Program scatter = test::build_test_program(expand_kernel_source("stages/scatter_probe.cl"));
+    cl::Buffer lane_in(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lanes.size() * sizeof(cl_float2),
+                       lanes.data());
+    cl::Buffer lane_out(device.context, CL_MEM_WRITE_ONLY, 2 * lanes.size() * sizeof(float));
+    cl::Kernel probe(scatter, "power_heuristic_probe");
+    probe.setArg(0, lane_in);
+    probe.setArg(1, lane_out);
+    device.queue.enqueueNDRangeKernel(probe, cl::NullRange, cl::NDRange(lanes.size() / 8), cl::NullRange);
+    std::vector<float> lane_weight(2 * lanes.size());
+    device.queue.enqueueReadBuffer(lane_out, CL_TRUE, 0, lane_weight.size() * sizeof(float), lane_weight.data());
+    for (size_t i = 0; i < pdfs.size(); ++i) {
+        const double a = pdfs[i].s[0], b = pdfs[i].s[1];
+        const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0;
+        EXPECT_NEAR(lane_weight[2 * i], expected, 1e-6) << "width 1, pdfs " << a << ", " << b;
+        EXPECT_NEAR(lane_weight[2 * i + 1], expected, 1e-6) << "width 8, pdfs " << a << ", " << b;
     }
 }
 
