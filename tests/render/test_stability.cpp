@@ -246,13 +246,8 @@ TEST(Stability, MisWeightsHoldWherePdfSquaresOverflow) {
     device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(pdfs.size()), cl::NullRange);
     std::vector<float> weight(pdfs.size());
     device.queue.enqueueReadBuffer(out, CL_TRUE, 0, weight.size() * sizeof(float), weight.data());
-    for (size_t i = 0; i < pdfs.size(); ++i) {
-        const double a = pdfs[i].s[0], b = pdfs[i].s[1];
-        const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0; // exact in double
-        EXPECT_NEAR(weight[i], expected, 1e-6) << "pdfs " << a << ", " << b;
-    }
 
-    // The light sample's weight, which the scatter (kernels/stages/scatter.inc)
+    // Beside it, the light sample's weight, which the scatter (kernels/stages/scatter.inc)
     // computes a lane at a time, at widths 1 and 8: the same pdfs, padded to
     // whole runs of eight lanes.
     std::vector<cl_float2> lanes = pdfs;
@@ -269,7 +264,8 @@ TEST(Stability, MisWeightsHoldWherePdfSquaresOverflow) {
     device.queue.enqueueReadBuffer(lane_out, CL_TRUE, 0, lane_weight.size() * sizeof(float), lane_weight.data());
     for (size_t i = 0; i < pdfs.size(); ++i) {
         const double a = pdfs[i].s[0], b = pdfs[i].s[1];
-        const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0;
+        const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0; // exact in double
+        EXPECT_NEAR(weight[i], expected, 1e-6) << "pdfs " << a << ", " << b;
         EXPECT_NEAR(lane_weight[2 * i], expected, 1e-6) << "width 1, pdfs " << a << ", " << b;
         EXPECT_NEAR(lane_weight[2 * i + 1], expected, 1e-6) << "width 8, pdfs " << a << ", " << b;
     }
