@@ -195,8 +195,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         uint lane_at = WF_LANE_CAPACITY; /* none */
         if (lid < extending) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
+            Arrival arrival;
             ShadeContext shading;
-            if (shade_surface(&path, &params, slot, &scene, &film, &shading)) {
+            if (shade_arrival(&path, &params, slot, &scene, &film, &arrival) &&
+                shade_surface(&path, &params, slot, &scene, &film, &arrival, &shading)) {
                 if (!WF_LIGHTS_IN_LANES || shading.kind != WF_BSDF_OPAQUE) shade_light(&params, &scene, &shading);
                 if (shading.kind == WF_BSDF_OPAQUE) {
                     lane_at = atomic_inc(&lanes_length);

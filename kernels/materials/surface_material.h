@@ -46,8 +46,9 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     return b;
 }
 
-/* x turned to the side of ng. */
-WF_INLINE float3 facing(float3 x, float3 ng) { return dot(x, ng) < 0.0f ? -x : x; }
+/* x turned to the side of ng; the dot product written out as the lanes'
+ * vec_dot is (stages/surface.inc), so both turn it alike. */
+WF_INLINE float3 facing(float3 x, float3 ng) { return x.x * ng.x + x.y * ng.y + x.z * ng.z < 0.0f ? -x : x; }
 
 /* The shading normal, on the side of ng (the unit geometric normal on the side
  * the ray arrived from, v the unit way back along it): the interpolated normal

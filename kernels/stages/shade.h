@@ -36,33 +36,6 @@
 #include "geometry/triangle_blocks.h"
 #include "lanes/lanes.h"
 
-typedef struct SurfaceHit {
-    float3 position;
-    float3 position_error;   /* per component, as geometry/ray_offset.h bounds it */
-    float3 geometric_normal; /* unit, on the side the ray arrived from */
-    float3 shading_normal;   /* unit, on the same side as geometric_normal */
-    bool front_face;         /* the ray arrived on the counter-clockwise side */
-    float area;
-} SurfaceHit;
-
-WF_INLINE SurfaceHit surface_at(const Scene* scene, const SurfacePoint* point, float4 hit, float3 direction) {
-    SurfaceHit s;
-    const float3 v0 = triangle_corner(scene->triangles, point->triangle, 0);
-    const float3 v1 = triangle_corner(scene->triangles, point->triangle, 1);
-    const float3 v2 = triangle_corner(scene->triangles, point->triangle, 2);
-    /* From the corners, not origin + t·direction: off the triangle by its own
-     * rounding alone, which position_error bounds. */
-    s.position = interpolate_triangle(v0, v1, v2, hit.y, hit.z);
-    s.position_error = interpolation_error(v0, v1, v2, hit.y, hit.z);
-    const float3 cross_edges = cross(v1 - v0, v2 - v0);
-    s.area = 0.5f * length(cross_edges);
-    const float3 ng = cross_edges / (2.0f * s.area);
-    s.front_face = dot(ng, direction) < 0.0f;
-    s.geometric_normal = s.front_face ? ng : -ng;
-    s.shading_normal = surface_shading_normal(scene, point, s.geometric_normal, -direction);
-    return s;
-}
-
 /* What shade_surface reads of a hit triangle beyond its corners, which the
  * traversal that found it has just read: asked for early by a schedule that
  * knows its hits before it shades them (the group schedule, after each
@@ -81,15 +54,6 @@ WF_INLINE void prefetch_surface(const Scene* scene, int triangle) {
 #endif
 }
 
-/* The weight of emission that BRDF sampling found, given the density with
- * which light sampling would have found it. A camera ray or a Dirac bounce
- * (pdf_bsdf 0) sees emitters whatever the technique: no light sample could. */
-WF_INLINE float emission_weight(uint light_sampling, float pdf_bsdf, float pdf_light) {
-    if (pdf_bsdf == 0.0f || light_sampling == WF_LIGHT_SAMPLING_BSDF) return 1.0f;
-    if (light_sampling == WF_LIGHT_SAMPLING_NEE) return 0.0f;
-    return power_heuristic(pdf_bsdf, pdf_light);
-}
-
 /* Radiance the path gathers, into its sum and its bounce layer. */
 WF_INLINE void add_radiance(PathState* path, const RenderParams* params, const FilmBuffers* film, uint slot, uint pixel,
                          uint depth, float3 radiance) {
@@ -101,8 +65,6 @@ WF_INLINE void add_radiance(PathState* path, const RenderParams* params, const F
 typedef struct ShadingFrame {
     float3 x, y, z;
 } ShadingFrame;
-
-WF_INLINE float3 to_local(const ShadingFrame* f, float3 v) { return (float3)(dot(v, f->x), dot(v, f->y), dot(v, f->z)); }
 
 /* What the surface hands on to the scatter, around the BSDF core. */
 typedef struct ShadeContext {
@@ -117,61 +79,107 @@ typedef struct ShadeContext {
     LightSample light; /* shade_light's, where query.light */
 } ShadeContext;
 
-/* The surface: what the ray found (the environment on a miss, emission on a
- * hit, weighed by MIS), then, unless the path ends here, the shading frame
- * and the BSDF's parameters: the BSDF core's query, but for its light sample
- * (shade_light).
- * Returns whether the path needs the core. */
-WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
-                          const FilmBuffers* film, ShadeContext* c) {
+/* What a path brings to the surface it arrived at: its ray and hit, as the
+ * path state holds them, and the numbers its next bounce draws. */
+typedef struct Arrival {
+    uint triangle; /* the BVH position of the hit triangle */
+    float t, b1, b2;
+    float3 direction;
+    float pdf_previous; /* 0 for camera rays and delta bounces: nothing to weigh against */
+    float3 throughput;
+    uint depth, pixel;
+    bool goes_on;   /* below --max-depth: the path scatters here */
+    float4 light_u; /* the light sample's numbers, where the path goes on and the scene has lights */
+    float4 u;       /* BSDF sampling's three, then roulette's */
+} Arrival;
+
+/* The surface, which the lane forms below share with the group schedule's lanes. */
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "stages/scatter.inc"
+#include "stages/surface.inc"
+#undef WF_W
+
+/* A path's arrival: on a miss, the environment it sees, if any, ends it;
+ * on a hit, its ray and hit and, where it goes on, its sample numbers.
+ * Returns whether it hit. */
+WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                             const FilmBuffers* film, Arrival* a) {
     const float4 hit = path->hit[slot];
     const int triangle = path_hit_triangle(path, slot);
     const float4 ray = path->ray_direction[slot];
-    const float3 direction = ray.xyz;
-    const float pdf_previous = ray.w; /* 0 for camera rays and delta bounces: nothing to weigh against */
-    const uint depth = path_depth(path, slot);
+    a->direction = ray.xyz;
+    a->pdf_previous = ray.w;
+    a->depth = path_depth(path, slot);
     const PathSample current = current_sample(path, params, slot);
-    const uint pixel = current.pixel;
-    const float3 throughput = path->throughput[slot].xyz;
+    a->pixel = current.pixel;
+    a->throughput = path->throughput[slot].xyz;
 
     if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
 #if WF_HAS_ENVIRONMENT
         if (params->environment_light != WF_NO_LIGHT) {
             const float pdf_light = scene->lights[params->environment_light].pmf *
-                                    environment_pdf(params->environment, scene->environment_texels, direction);
-            const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-            add_radiance(path, params, film, slot, pixel, depth,
-                         weight * throughput *
-                             environment_radiance(params->environment, scene->environment_texels, direction));
+                                    environment_pdf(params->environment, scene->environment_texels, a->direction);
+            const float weight = emission_weight_x1(params->light_sampling, a->pdf_previous, pdf_light);
+            add_radiance(path, params, film, slot, a->pixel, a->depth,
+                         weight * a->throughput *
+                             environment_radiance(params->environment, scene->environment_texels, a->direction));
         }
 #endif
         return false;
     }
+    a->triangle = (uint)triangle;
+    a->t = hit.x;
+    a->b1 = hit.y;
+    a->b2 = hit.z;
+    a->goes_on = a->depth < params->max_depth;
+    a->light_u = (float4)(0.0f);
+    a->u = (float4)(0.0f);
+    if (a->goes_on) {
+        /* Next-event estimation's numbers, used unless the BSDF is a Dirac one. */
+        if (params->light_count > 0u)
+            a->light_u = sample_values(params, a->pixel, current.sample, a->depth, WF_RNG_LIGHT);
+        /* The BSDF group's fourth number is roulette's: drawn with the
+         * direction, independent of it, and handed on so that roulette need
+         * not draw the group again. */
+        a->u = sample_values(params, a->pixel, current.sample, a->depth, WF_RNG_BSDF);
+    }
+    return true;
+}
 
-    const uint sample = current.sample;
+/* The surface a path arrived at: the emission it found, weighed by MIS,
+ * then, unless the path ends here, the shading frame and the BSDF's
+ * parameters: the BSDF core's query, but for its light sample (shade_light).
+ * Returns whether the path needs the core. */
+WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                             const FilmBuffers* film, const Arrival* a, ShadeContext* c) {
     SurfacePoint point;
-    point.triangle = (uint)triangle;
-    point.material = triangle_material(scene->triangles, (uint)triangle);
-    point.b1 = hit.y;
-    point.b2 = hit.z;
+    point.triangle = a->triangle;
+    point.material = triangle_material(scene->triangles, a->triangle);
+    point.b1 = a->b1;
+    point.b2 = a->b2;
     const __global Material* m = &scene->materials[point.material];
-    const SurfaceHit s = surface_at(scene, &point, hit, direction);
+    const lvec1 direction = vec_from_float3(a->direction);
+    const SurfaceGeometry_x1 s = surface_geometry_x1(scene, (int)a->triangle, a->b1, a->b2, direction);
+    const float3 geometric_normal = vec_to_float3(s.geometric_normal);
+    const float3 shading_normal =
+        surface_normal(scene, &point, vec_to_float3(s.normal), geometric_normal, -a->direction);
 #if WF_HAS_AOVS
-    if (depth == 0u) /* camera rays are unit: t is the distance */
-        add_first_hit_aovs(film, pixel, surface_bsdf(m, scene, &point, params->hemisphere).base_color,
-                           s.shading_normal, hit.x);
+    if (a->depth == 0u) /* camera rays are unit: t is the distance */
+        add_first_hit_aovs(film, a->pixel, surface_bsdf(m, scene, &point, params->hemisphere).base_color,
+                           shading_normal, a->t);
 #endif
 
     /* Emission seen along the ray. */
-    const int light = triangle_light(scene->triangles, (uint)triangle);
+    const int light = triangle_light(scene->triangles, a->triangle);
     if (light >= 0 && (s.front_face || (m->flags & WF_MATERIAL_DOUBLE_SIDED))) {
-        const float cos_light = -dot(s.geometric_normal, direction);
-        const float pdf_light = light_pdf_solid_angle_x1(scene->lights[light].pmf, s.area, hit.x * hit.x, cos_light);
-        const float weight = emission_weight(params->light_sampling, pdf_previous, pdf_light);
-        add_radiance(path, params, film, slot, pixel, depth,
-                     weight * throughput * surface_emission(m, scene, &point, s.geometric_normal, -direction));
+        const float cos_light = -vec_dot_x1(s.geometric_normal, direction);
+        const float pdf_light = light_pdf_solid_angle_x1(scene->lights[light].pmf, s.area, a->t * a->t, cos_light);
+        const float weight = emission_weight_x1(params->light_sampling, a->pdf_previous, pdf_light);
+        add_radiance(path, params, film, slot, a->pixel, a->depth,
+                     weight * a->throughput * surface_emission(m, scene, &point, geometric_normal, -a->direction));
     }
-    if (depth >= params->max_depth) return false;
+    if (!a->goes_on) return false;
 
     BsdfQuery* q = &c->query;
     q->params = surface_bsdf(m, scene, &point, params->hemisphere);
@@ -180,25 +188,25 @@ WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint s
      * from; a solid transmissive one keeps its front (counter-clockwise) side
      * as +z, so that wo.z < 0 says the ray arrived from inside. */
     const bool flip = bsdf_has_inside(&q->params) && !s.front_face;
-    c->frame.z = flip ? -s.shading_normal : s.shading_normal;
-    c->geometric_normal = flip ? -s.geometric_normal : s.geometric_normal;
-    orthonormal_basis(c->frame.z, &c->frame.x, &c->frame.y);
-    q->wo = to_local(&c->frame, -direction);
-    c->position = s.position;
-    c->position_error = s.position_error;
-    c->throughput = throughput;
-    c->depth = depth;
+    c->frame.z = flip ? -shading_normal : shading_normal;
+    c->geometric_normal = flip ? -geometric_normal : geometric_normal;
+    lvec1 frame_x, frame_y;
+    const lvec1 frame_z = vec_from_float3(c->frame.z);
+    orthonormal_basis_x1(frame_z, &frame_x, &frame_y);
+    c->frame.x = vec_to_float3(frame_x);
+    c->frame.y = vec_to_float3(frame_y);
+    q->wo = vec_to_float3(vec_in_frame_x1(vec_scale_x1(direction, -1.0f), frame_x, frame_y, frame_z));
+    c->position = vec_to_float3(s.position);
+    c->position_error = vec_to_float3(s.position_error);
+    c->throughput = a->throughput;
+    c->depth = a->depth;
 
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */
     q->light = params->light_count > 0u && !bsdf_is_delta(&q->params);
-    if (q->light) c->light_u = sample_values(params, pixel, sample, depth, WF_RNG_LIGHT);
-    /* The BSDF group's fourth number is roulette's: drawn with the direction,
-     * independent of it, and handed on so that roulette need not draw the
-     * group again. */
-    const float4 u = sample_values(params, pixel, sample, depth, WF_RNG_BSDF);
-    q->u = u.xyz;
-    c->roulette_u = u.w;
+    c->light_u = a->light_u;
+    q->u = a->u.xyz;
+    c->roulette_u = a->u.w;
     return true;
 }
 
@@ -212,12 +220,6 @@ WF_INLINE void shade_light(const RenderParams* params, const Scene* scene, Shade
     c->query.wi_light = vec_to_float3(vec_in_frame_x1(vec_from_float3(c->light.wi), vec_from_float3(c->frame.x),
                                                       vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
 }
-
-/* The scatter's arithmetic, written once for any lane width. */
-#define WF_W 1
-#include "lanes/lane_width.inc"
-#include "stages/scatter.inc"
-#undef WF_W
 
 /* The scatter's inputs for one path, at width 1. */
 WF_INLINE void scatter_inputs_x1(const ShadeContext* c, const BsdfAnswer* a, ScatterSurface_x1* s,
@@ -285,8 +287,11 @@ WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint s
  * scatter; returns the queue the path goes to next. */
 WF_INLINE uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                        const FilmBuffers* film) {
+    Arrival arrival;
     ShadeContext c;
-    if (!shade_surface(path, params, slot, scene, film, &c)) return WF_QUEUE_FINISHED;
+    if (!shade_arrival(path, params, slot, scene, film, &arrival) ||
+        !shade_surface(path, params, slot, scene, film, &arrival, &c))
+        return WF_QUEUE_FINISHED;
     shade_light(params, scene, &c);
     const BsdfAnswer a = bsdf_core(c.kind, &c.query);
     return shade_scatter(path, params, slot, &c, &a);
