@@ -186,16 +186,24 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
 #endif
         barrier(CLK_LOCAL_MEM_FENCE);
 #ifdef WF_GROUP_LANES
-        /* Shade in three steps: each path's surface, after which a path of
-         * a kind with lanes waits in local memory (with its light sample,
-         * unless the lanes take it) and any other is shaded to its end;
-         * those waiting, WF_LANE_WIDTH paths a work-item
-         * (stages/shade_lanes.h); their scatters into the path state. */
+        /* Shade in three steps: each path's arrival and surface, after
+         * which a path of a kind with lanes waits in local memory (with its
+         * light sample, unless the lanes take it) and any other is shaded to
+         * its end; those waiting, WF_LANE_WIDTH paths a work-item
+         * (stages/shade_lanes.h); their emission and scatters into the path
+         * state. Where the lanes find the surface too (WF_SURFACE_IN_LANES),
+         * every hit waits after its arrival alone. */
         uint next = WF_QUEUE_FINISHED;
         uint lane_at = WF_LANE_CAPACITY; /* none */
         if (lid < extending) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
             Arrival arrival;
+#if WF_SURFACE_IN_LANES
+            if (shade_arrival(&path, &params, slot, &scene, &film, &arrival)) {
+                lane_at = atomic_inc(&lanes_length);
+                shade_lanes_put_arrival(lanes, lane_at, &arrival);
+            }
+#else
             ShadeContext shading;
             if (shade_arrival(&path, &params, slot, &scene, &film, &arrival) &&
                 shade_surface(&path, &params, slot, &scene, &film, &arrival, &shading)) {
@@ -208,6 +216,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
                     next = shade_scatter(&path, &params, slot, &shading, &answer);
                 }
             }
+#endif
         }
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid * WF_LANE_WIDTH < lanes_length) {
@@ -220,7 +229,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         if (lid < extending) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
 #ifdef WF_GROUP_LANES
-            if (lane_at < WF_LANE_CAPACITY) {
+            if (lane_at < WF_LANE_CAPACITY && shade_lanes_emission(lanes, lane_at, &path, &params, &film, slot)) {
                 float roulette_u;
                 const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at, &roulette_u);
                 next = write_scatter(&path, slot, &scattered, roulette_u);

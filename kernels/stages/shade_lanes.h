@@ -27,11 +27,20 @@
     (WF_HAS_EMISSIVE_TRIANGLES && !WF_HAS_PUNCTUAL_LIGHTS && !WF_HAS_ENVIRONMENT && !WF_HAS_TEXTURES && \
      !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL)
 
+/* No textures, normal maps, vertex colours or first-hit AOVs, and every
+ * material of the opaque kind: a hit's surface is its triangle's corners and
+ * normals and its material's factors, and the lanes find it too
+ * (stages/surface.inc). */
+#define WF_SURFACE_IN_LANES                                                                  \
+    (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
+     !WF_HAS_BSDF_GENERAL)
+
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
 #include "lights/light_lanes.inc"
 #include "stages/scatter.inc"
-#undef WF_W
+#include "stages/surface.inc"
+/* WF_W stays WF_LANE_WIDTH to the end of the file: the code below speaks its vocabulary. */
 
 /* Room for a whole work-group, in whole runs of lanes. */
 #define WF_LANE_CAPACITY ((WF_LOCAL_SIZE + WF_LANE_WIDTH - 1) / WF_LANE_WIDTH * WF_LANE_WIDTH)
@@ -51,12 +60,18 @@ enum LaneField {
     WF_LANE_LIGHT_RADIANCE = WF_LANE_LIGHT_WI + 3, WF_LANE_LIGHT_PDF = WF_LANE_LIGHT_RADIANCE + 3,
     WF_LANE_LIGHT_DELTA, WF_LANE_LIGHT_SEGMENT_END, WF_LANE_LIGHT_POINT,
     WF_LANE_LIGHT_POINT_ERROR = WF_LANE_LIGHT_POINT + 3, WF_LANE_LIGHT_NORMAL = WF_LANE_LIGHT_POINT_ERROR + 3,
-    WF_LANE_INPUTS = WF_LANE_LIGHT_NORMAL + 3, /* the inputs above, the scatter below */
-    WF_LANE_SHADOW = WF_LANE_INPUTS, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
+    WF_LANE_TRIANGLE = WF_LANE_LIGHT_NORMAL + 3, /* the arrival (WF_SURFACE_IN_LANES): a bit pattern, */
+    WF_LANE_HIT, /* t, b1, b2 */
+    WF_LANE_DIRECTION = WF_LANE_HIT + 3, WF_LANE_PDF_PREVIOUS = WF_LANE_DIRECTION + 3, WF_LANE_GOES_ON,
+    WF_LANE_INPUTS, /* the inputs above, the surface's emission and the scatter below */
+    WF_LANE_EMITS = WF_LANE_INPUTS, WF_LANE_EMITTED,
+    WF_LANE_SHADOW = WF_LANE_EMITTED + 3, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
     WF_LANE_SHADOW_LIGHT = WF_LANE_SHADOW_SEGMENT + 3, WF_LANE_CONTINUES = WF_LANE_SHADOW_LIGHT + 3,
     WF_LANE_NEXT_THROUGHPUT, WF_LANE_RAY_ORIGIN = WF_LANE_NEXT_THROUGHPUT + 3,
     WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3,
-    WF_LANE_ROULETTE_U, /* not the lanes': handed from shade_lanes_put to shade_lanes_get */
+    WF_LANE_ROULETTE_U, /* not the lanes': handed from shade_lanes_put to shade_lanes_get, */
+    WF_LANE_PIXEL,      /* and with the surface in lanes, as bit patterns, */
+    WF_LANE_DEPTH,
     WF_LANE_FIELDS
 };
 
@@ -70,6 +85,18 @@ WF_INLINE void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
 
 WF_INLINE float3 lanes_get3(__local const float* soa, uint field, uint at) {
     return (float3)(WF_LANE_AT(soa, field, at), WF_LANE_AT(soa, field + 1, at), WF_LANE_AT(soa, field + 2, at));
+}
+
+/* A light sample (shade_light's), for the lanes that do not take their own. */
+WF_INLINE void lanes_put_light(__local float* soa, uint at, const LightSample* light) {
+    lanes_put3(soa, WF_LANE_LIGHT_WI, at, light->wi);
+    lanes_put3(soa, WF_LANE_LIGHT_RADIANCE, at, light->radiance);
+    WF_LANE_AT(soa, WF_LANE_LIGHT_PDF, at) = light->pdf;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_DELTA, at) = light->delta ? 1.0f : 0.0f;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_SEGMENT_END, at) = (float)light->segment_end;
+    lanes_put3(soa, WF_LANE_LIGHT_POINT, at, light->point);
+    lanes_put3(soa, WF_LANE_LIGHT_POINT_ERROR, at, light->point_error);
+    lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, light->normal);
 }
 
 WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
@@ -99,16 +126,48 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at) = u.w;
 #else
     lanes_put3(soa, WF_LANE_WI_LIGHT, at, q->wi_light);
-    lanes_put3(soa, WF_LANE_LIGHT_WI, at, c->light.wi);
-    lanes_put3(soa, WF_LANE_LIGHT_RADIANCE, at, c->light.radiance);
-    WF_LANE_AT(soa, WF_LANE_LIGHT_PDF, at) = c->light.pdf;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_DELTA, at) = c->light.delta ? 1.0f : 0.0f;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_SEGMENT_END, at) = (float)c->light.segment_end;
-    lanes_put3(soa, WF_LANE_LIGHT_POINT, at, c->light.point);
-    lanes_put3(soa, WF_LANE_LIGHT_POINT_ERROR, at, c->light.point_error);
-    lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, c->light.normal);
+    lanes_put_light(soa, at, &c->light);
 #endif
 }
+
+#if WF_SURFACE_IN_LANES
+/* A path that hit, as shade_arrival found it: the lanes find its surface. */
+WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a) {
+    WF_LANE_AT(soa, WF_LANE_TRIANGLE, at) = as_float(a->triangle);
+    WF_LANE_AT(soa, WF_LANE_HIT, at) = a->t;
+    WF_LANE_AT(soa, WF_LANE_HIT + 1, at) = a->b1;
+    WF_LANE_AT(soa, WF_LANE_HIT + 2, at) = a->b2;
+    lanes_put3(soa, WF_LANE_DIRECTION, at, a->direction);
+    WF_LANE_AT(soa, WF_LANE_PDF_PREVIOUS, at) = a->pdf_previous;
+    lanes_put3(soa, WF_LANE_THROUGHPUT, at, a->throughput);
+    WF_LANE_AT(soa, WF_LANE_GOES_ON, at) = a->goes_on ? 1.0f : 0.0f;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U, at) = a->light_u.x;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 1, at) = a->light_u.y;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 2, at) = a->light_u.z;
+    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at) = a->light_u.w;
+    lanes_put3(soa, WF_LANE_U, at, a->u.xyz);
+    WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at) = a->u.w;
+    WF_LANE_AT(soa, WF_LANE_PIXEL, at) = as_float(a->pixel);
+    WF_LANE_AT(soa, WF_LANE_DEPTH, at) = as_float(a->depth);
+}
+
+/* The emission the lanes found for the path put at `at`, added to it as
+ * shade_surface adds it; returns whether the path goes on (then its scatter
+ * waits in the lanes: shade_lanes_get). */
+WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
+                                    const FilmBuffers* film, uint slot) {
+    if (WF_LANE_AT(soa, WF_LANE_EMITS, at) != 0.0f)
+        add_radiance(path, params, film, slot, as_uint(WF_LANE_AT(soa, WF_LANE_PIXEL, at)),
+                     as_uint(WF_LANE_AT(soa, WF_LANE_DEPTH, at)), lanes_get3(soa, WF_LANE_EMITTED, at));
+    return WF_LANE_AT(soa, WF_LANE_GOES_ON, at) != 0.0f;
+}
+#else
+/* Where shade_surface added the emission, and put only paths that go on. */
+WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
+                                    const FilmBuffers* film, uint slot) {
+    return true;
+}
+#endif
 
 /* The scatter of the path put at `at`, as scatter_x1 gives it, and its
  * roulette number. */
@@ -127,14 +186,12 @@ WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* r
     return out;
 }
 
-#define WF_LANE_REAL WF_CAT(lreal, WF_LANE_WIDTH)
 #define WF_LANE_LOAD(field, first) WF_CAT(vload, WF_LANE_WIDTH)(0, &WF_LANE_AT(soa, field, first))
 #define WF_LANE_STORE(x, field, first) WF_CAT(vstore, WF_LANE_WIDTH)((x), 0, &WF_LANE_AT(soa, field, first))
-#define WF_LANE_X(name) WF_CAT(name, WF_CAT(_x, WF_LANE_WIDTH))
 #define WF_LANE_LOAD_VEC(field, first) \
-    WF_LANE_X(vec)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
+    LFN(vec)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
 #define WF_LANE_LOAD_RGB(field, first) \
-    WF_LANE_X(rgb)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
+    LFN(rgb)(WF_LANE_LOAD(field, first), WF_LANE_LOAD((field) + 1, first), WF_LANE_LOAD((field) + 2, first))
 #define WF_LANE_STORE_VEC(v, field, first)         \
     do {                                           \
         WF_LANE_STORE((v).x, (field), first);      \
@@ -150,24 +207,90 @@ WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* r
 #define WF_LANE_MASK(field, first) (WF_LANE_LOAD(field, first) != 0.0f)
 #define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
 
-/* Shades the paths put at [first, first + WF_LANE_WIDTH) of `length`: the
- * light sample where the lanes take it, the BSDF core and the scatter. A run that ends past the last path first repeats
- * its first path's inputs into the empty lanes, so that no lane reads what
- * nobody wrote. */
+#if WF_SURFACE_IN_LANES
+/* shade_surface in lanes, for the arrivals put at [first, first + WF_LANE_WIDTH):
+ * the point and its normals, the emission found (into the lanes' fields, for
+ * shade_lanes_emission), the material's factors, the frame and wo (the opaque
+ * kind has no inside: the frame is on the side the ray arrived from), and
+ * whether the path takes a light sample (bsdf_is_delta's rule for this kind). */
+WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderParams* params, const Scene* scene,
+                                   LFN(OpaqueParams) * p, LVEC* wo, LFN(ScatterSurface) * s, LINT* light) {
+    const LINT triangle = LASINT(WF_LANE_LOAD(WF_LANE_TRIANGLE, first));
+    const LREAL t = WF_LANE_LOAD(WF_LANE_HIT, first);
+    const LVEC direction = WF_LANE_LOAD_VEC(WF_LANE_DIRECTION, first);
+    const LFN(SurfaceGeometry) g = LFN(surface_geometry)(scene, triangle, WF_LANE_LOAD(WF_LANE_HIT + 1, first),
+                                                         WF_LANE_LOAD(WF_LANE_HIT + 2, first), direction);
+    const LINT block_at = triangle / WF_BLOCK_LANES * WF_WORDS(TriangleBlock) + triangle % WF_BLOCK_LANES;
+    const LINT material_at = LGATHERI((__global const int*)scene->triangles->material, block_at) * WF_WORDS(Material);
+    __global const Material* m = scene->materials;
+    s->throughput = WF_LANE_LOAD_RGB(WF_LANE_THROUGHPUT, first);
+
+    /* Emission seen along the ray. */
+    const LINT light_entry = LGATHERI(scene->triangles->light, block_at);
+    const LINT flags = LGATHERI((__global const int*)&m->flags, material_at);
+    const LINT emits = (light_entry >= 0) & (g.front_face | ((flags & (int)WF_MATERIAL_DOUBLE_SIDED) != 0));
+    LRGB emitted = LFN(gray)(0.0f);
+    if (LANY(emits)) { /* then the light table has an entry 0 */
+        const LREAL pmf = LGATHER(&scene->lights->pmf, max(light_entry, 0) * WF_WORDS(LightEntry));
+        const LREAL cos_light = -LFN(vec_dot)(g.geometric_normal, direction);
+        const LREAL pdf_light = LFN(light_pdf_solid_angle)(pmf, g.area, t * t, cos_light);
+        const LREAL weight =
+            LFN(emission_weight)(params->light_sampling, WF_LANE_LOAD(WF_LANE_PDF_PREVIOUS, first), pdf_light);
+        const LRGB emission = LFN(rgb)(LGATHER(m->emission, material_at), LGATHER(m->emission + 1, material_at),
+                                       LGATHER(m->emission + 2, material_at));
+        emitted = LFN(rgb_mul)(LFN(rgb_scale)(s->throughput, weight), emission);
+    }
+    WF_LANE_STORE(WF_LANE_FROM_MASK(emits), WF_LANE_EMITS, first);
+    WF_LANE_STORE_RGB(emitted, WF_LANE_EMITTED, first);
+
+    /* The material's factors: surface_bsdf's, no texture multiplying them. */
+    p->base_color = LFN(rgb)(LGATHER(m->base_color, material_at), LGATHER(m->base_color + 1, material_at),
+                             LGATHER(m->base_color + 2, material_at));
+    p->metallic = LGATHER(&m->metallic, material_at);
+    p->roughness = LGATHER(&m->roughness, material_at);
+    p->specular = LGATHER(&m->specular, material_at);
+    p->specular_color = LFN(rgb)(LGATHER(m->specular_color, material_at), LGATHER(m->specular_color + 1, material_at),
+                                 LGATHER(m->specular_color + 2, material_at));
+    p->ior = LGATHER(&m->ior, material_at);
+
+    s->position = g.position;
+    s->position_error = g.position_error;
+    s->geometric_normal = g.geometric_normal;
+    s->frame_z = LFN(facing)(g.normal, g.geometric_normal);
+    LFN(orthonormal_basis)(s->frame_z, &s->frame_x, &s->frame_y);
+    *wo = LFN(vec_in_frame)(LFN(vec_scale)(direction, -1.0f), s->frame_x, s->frame_y, s->frame_z);
+
+    /* bsdf_is_delta: a smooth interface over no diffuse albedo. */
+    const LRGB albedo = LFN(rgb_scale)(p->base_color, 1.0f - p->metallic);
+    const LREAL albedo_sum = albedo.r + albedo.g + albedo.b;
+    const LINT delta = (p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA) & !(albedo_sum > 0.0f);
+    *light = WF_LANE_MASK(WF_LANE_GOES_ON, first) & !delta & LMASK(params->light_count > 0u);
+}
+#endif
+
+/* Shades the paths put at [first, first + WF_LANE_WIDTH) of `length`: their
+ * surface where the lanes take it, their light sample where the lanes take
+ * it, the BSDF core and the scatter. A run that ends past the last path first
+ * repeats its first path's inputs into the empty lanes, so that no lane reads
+ * what nobody wrote. */
 WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, const RenderParams* params,
                                const Scene* scene) {
     for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
         for (uint f = 0; f < WF_LANE_INPUTS; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
-    WF_LANE_X(OpaqueParams) p;
+    LFN(OpaqueParams) p;
+    LVEC wo;
+    LFN(ScatterSurface) s;
+    LFN(ScatterLight) l;
+#if WF_SURFACE_IN_LANES
+    shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);
+#else
     p.base_color = WF_LANE_LOAD_RGB(WF_LANE_BASE, first);
     p.metallic = WF_LANE_LOAD(WF_LANE_METALLIC, first);
     p.roughness = WF_LANE_LOAD(WF_LANE_ROUGHNESS, first);
     p.specular = WF_LANE_LOAD(WF_LANE_SPECULAR, first);
     p.specular_color = WF_LANE_LOAD_RGB(WF_LANE_SPECULAR_COLOR, first);
     p.ior = WF_LANE_LOAD(WF_LANE_IOR, first);
-    const WF_CAT(lvec, WF_LANE_WIDTH) wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
-    const WF_CAT(lvec, WF_LANE_WIDTH) u = WF_LANE_LOAD_VEC(WF_LANE_U, first);
-    WF_LANE_X(ScatterSurface) s;
+    wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
     s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);
     s.geometric_normal = WF_LANE_LOAD_VEC(WF_LANE_GEOMETRIC_NORMAL, first);
@@ -175,37 +298,57 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     s.frame_y = WF_LANE_LOAD_VEC(WF_LANE_FRAME_Y, first);
     s.frame_z = WF_LANE_LOAD_VEC(WF_LANE_FRAME_Z, first);
     s.throughput = WF_LANE_LOAD_RGB(WF_LANE_THROUGHPUT, first);
-    WF_LANE_X(ScatterLight) l;
     l.present = WF_LANE_MASK(WF_LANE_LIGHT, first);
+#endif
+    const LVEC u = WF_LANE_LOAD_VEC(WF_LANE_U, first);
 #if WF_LIGHTS_IN_LANES
     /* shade_light's sample and direction, in lanes. */
-    const WF_LANE_REAL u_index = WF_LANE_LOAD(WF_LANE_LIGHT_U, first);
-    const WF_LANE_REAL u_alias = WF_LANE_LOAD(WF_LANE_LIGHT_U + 3, first);
-    const WF_CAT(lint, WF_LANE_WIDTH) entry =
-        WF_LANE_X(choose_light)(scene->lights, params->light_count, u_index, u_alias);
-    l.sample = WF_LANE_X(sample_emissive_triangle)(scene, entry, s.position, WF_LANE_LOAD(WF_LANE_LIGHT_U + 1, first),
-                                                   WF_LANE_LOAD(WF_LANE_LIGHT_U + 2, first));
-    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_X(vec_in_frame)(l.sample.wi, s.frame_x, s.frame_y, s.frame_z);
+    const LREAL u_index = WF_LANE_LOAD(WF_LANE_LIGHT_U, first);
+    const LREAL u_alias = WF_LANE_LOAD(WF_LANE_LIGHT_U + 3, first);
+    const LINT entry = LFN(choose_light)(scene->lights, params->light_count, u_index, u_alias);
+    l.sample = LFN(sample_emissive_triangle)(scene, entry, s.position, WF_LANE_LOAD(WF_LANE_LIGHT_U + 1, first),
+                                             WF_LANE_LOAD(WF_LANE_LIGHT_U + 2, first));
+    const LVEC wi_light = LFN(vec_in_frame)(l.sample.wi, s.frame_x, s.frame_y, s.frame_z);
 #else
-    const WF_CAT(lvec, WF_LANE_WIDTH) wi_light = WF_LANE_LOAD_VEC(WF_LANE_WI_LIGHT, first);
+#if WF_SURFACE_IN_LANES
+    /* shade_light, a lane at a time, from the points the lanes found. */
+    WF_LANE_STORE_VEC(s.position, WF_LANE_POSITION, first);
+    WF_LANE_STORE(WF_LANE_FROM_MASK(l.present), WF_LANE_LIGHT, first);
+    for (uint at = first; at < first + WF_LANE_WIDTH; ++at) {
+        LightSample light = no_light_sample();
+        if (WF_LANE_AT(soa, WF_LANE_LIGHT, at) != 0.0f) {
+            const float4 light_u =
+                (float4)(WF_LANE_AT(soa, WF_LANE_LIGHT_U, at), WF_LANE_AT(soa, WF_LANE_LIGHT_U + 1, at),
+                         WF_LANE_AT(soa, WF_LANE_LIGHT_U + 2, at), WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at));
+            light = sample_light(params, scene, lanes_get3(soa, WF_LANE_POSITION, at), light_u);
+        }
+        lanes_put_light(soa, at, &light);
+    }
+#endif
     l.sample.wi = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_WI, first);
     l.sample.radiance = WF_LANE_LOAD_RGB(WF_LANE_LIGHT_RADIANCE, first);
     l.sample.pdf = WF_LANE_LOAD(WF_LANE_LIGHT_PDF, first);
     l.sample.delta = WF_LANE_MASK(WF_LANE_LIGHT_DELTA, first);
-    l.sample.segment_end = WF_CAT(convert_int, WF_LANE_WIDTH)(WF_LANE_LOAD(WF_LANE_LIGHT_SEGMENT_END, first));
+    l.sample.segment_end = LTOINT(WF_LANE_LOAD(WF_LANE_LIGHT_SEGMENT_END, first));
     l.sample.point = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT, first);
     l.sample.point_error = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_POINT_ERROR, first);
     l.sample.normal = WF_LANE_LOAD_VEC(WF_LANE_LIGHT_NORMAL, first);
+#if WF_SURFACE_IN_LANES
+    /* shade_light's direction in the frame; a path without a sample ignores it. */
+    const LVEC wi_light = LFN(vec_in_frame)(l.sample.wi, s.frame_x, s.frame_y, s.frame_z);
+#else
+    const LVEC wi_light = WF_LANE_LOAD_VEC(WF_LANE_WI_LIGHT, first);
+#endif
 #endif
     l.wi_local_z = wi_light.z;
 
-    const WF_LANE_X(OpaqueAtWo) at = WF_LANE_X(opaque_at_wo)(&p, wo);
-    WF_LANE_X(ScatterAnswer) a;
-    a.f_light = WF_LANE_X(opaque_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
-    a.f = WF_LANE_X(opaque_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
+    const LFN(OpaqueAtWo) at = LFN(opaque_at_wo)(&p, wo);
+    LFN(ScatterAnswer) a;
+    a.f_light = LFN(opaque_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
+    a.f = LFN(opaque_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
 
-    const WF_LANE_X(Scatter) out =
-        WF_LANE_X(scatter)(&s, &l, &a, params->light_sampling, 2.0f * params->scene_diameter);
+    const LFN(Scatter) out =
+        LFN(scatter)(&s, &l, &a, params->light_sampling, 2.0f * params->scene_diameter);
     WF_LANE_STORE(WF_LANE_FROM_MASK(out.shadow), WF_LANE_SHADOW, first);
     WF_LANE_STORE_VEC(out.shadow_origin, WF_LANE_SHADOW_ORIGIN, first);
     WF_LANE_STORE_VEC(out.shadow_segment, WF_LANE_SHADOW_SEGMENT, first);
@@ -217,5 +360,6 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     WF_LANE_STORE(out.ray_pdf, WF_LANE_RAY_PDF, first);
 }
 
+#undef WF_W
 #endif
 #endif
