@@ -199,9 +199,11 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             const uint slot = queue[WF_QUEUE_EXTEND].slots[lid];
             Arrival arrival;
 #if WF_SURFACE_IN_LANES
-            if (shade_arrival(&path, &params, slot, &scene, &film, &arrival)) {
+            if (path_arrival(&path, &params, slot, &scene, &film, &arrival)) {
+                const bool numbers = !lanes_draw_numbers(&params);
+                if (numbers) arrival_numbers(&params, &arrival);
                 lane_at = atomic_inc(&lanes_length);
-                shade_lanes_put_arrival(lanes, lane_at, &arrival);
+                shade_lanes_put_arrival(lanes, lane_at, &arrival, numbers);
             }
 #else
             ShadeContext shading;

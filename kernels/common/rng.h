@@ -17,17 +17,30 @@
 #define WF_RNG_BSDF 2   /* x: lobe; y, z: direction; w: roulette (handed on in ray_origin.w) */
 #define WF_RNG_GROUPS 3
 
+/* pcg4d on four words x, y, z, w, each a uint or a lane vector of them
+ * (common/rng_lanes.inc hashes eight keys at once with it). */
+#define WF_PCG4D(x, y, z, w)            \
+    do {                                \
+        x = x * 1664525u + 1013904223u; \
+        y = y * 1664525u + 1013904223u; \
+        z = z * 1664525u + 1013904223u; \
+        w = w * 1664525u + 1013904223u; \
+        x += y * w;                     \
+        y += z * x;                     \
+        z += x * y;                     \
+        w += y * z;                     \
+        x ^= x >> 16u;                  \
+        y ^= y >> 16u;                  \
+        z ^= z >> 16u;                  \
+        w ^= w >> 16u;                  \
+        x += y * w;                     \
+        y += z * x;                     \
+        z += x * y;                     \
+        w += y * z;                     \
+    } while (0)
+
 WF_INLINE uint4 pcg4d(uint4 v) {
-    v = v * 1664525u + 1013904223u;
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
-    v ^= v >> 16u;
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
+    WF_PCG4D(v.x, v.y, v.z, v.w);
     return v;
 }
 

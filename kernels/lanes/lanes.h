@@ -29,6 +29,9 @@ typedef float8 lreal8;
 typedef int8 lint8;
 typedef float16 lreal16;
 typedef int16 lint16;
+typedef uint luint1;
+typedef uint8 luint8;
+typedef uint16 luint16;
 
 #define WF_LANE_STRUCTS(w)                  \
     typedef struct lrgb##w {                \

@@ -87,7 +87,7 @@ typedef struct Arrival {
     float3 direction;
     float pdf_previous; /* 0 for camera rays and delta bounces: nothing to weigh against */
     float3 throughput;
-    uint depth, pixel;
+    uint depth, pixel, sample;
     bool goes_on;   /* below --max-depth: the path scatters here */
     float4 light_u; /* the light sample's numbers, where the path goes on and the scene has lights */
     float4 u;       /* BSDF sampling's three, then roulette's */
@@ -101,10 +101,10 @@ typedef struct Arrival {
 #undef WF_W
 
 /* A path's arrival: on a miss, the environment it sees, if any, ends it;
- * on a hit, its ray and hit and, where it goes on, its sample numbers.
+ * on a hit, its ray and hit, but for the sample numbers (arrival_numbers).
  * Returns whether it hit. */
-WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
-                             const FilmBuffers* film, Arrival* a) {
+WF_INLINE bool path_arrival(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                            const FilmBuffers* film, Arrival* a) {
     const float4 hit = path->hit[slot];
     const int triangle = path_hit_triangle(path, slot);
     const float4 ray = path->ray_direction[slot];
@@ -113,6 +113,7 @@ WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint s
     a->depth = path_depth(path, slot);
     const PathSample current = current_sample(path, params, slot);
     a->pixel = current.pixel;
+    a->sample = current.sample;
     a->throughput = path->throughput[slot].xyz;
 
     if (triangle < 0) { /* escaped: the environment, if any, is what it sees */
@@ -133,17 +134,27 @@ WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint s
     a->b1 = hit.y;
     a->b2 = hit.z;
     a->goes_on = a->depth < params->max_depth;
+    return true;
+}
+
+/* The numbers a hit's bounce draws, where the path goes on. */
+WF_INLINE void arrival_numbers(const RenderParams* params, Arrival* a) {
     a->light_u = (float4)(0.0f);
     a->u = (float4)(0.0f);
-    if (a->goes_on) {
-        /* Next-event estimation's numbers, used unless the BSDF is a Dirac one. */
-        if (params->light_count > 0u)
-            a->light_u = sample_values(params, a->pixel, current.sample, a->depth, WF_RNG_LIGHT);
-        /* The BSDF group's fourth number is roulette's: drawn with the
-         * direction, independent of it, and handed on so that roulette need
-         * not draw the group again. */
-        a->u = sample_values(params, a->pixel, current.sample, a->depth, WF_RNG_BSDF);
-    }
+    if (!a->goes_on) return;
+    /* Next-event estimation's numbers, used unless the BSDF is a Dirac one. */
+    if (params->light_count > 0u) a->light_u = sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_LIGHT);
+    /* The BSDF group's fourth number is roulette's: drawn with the direction,
+     * independent of it, and handed on so that roulette need not draw the
+     * group again. */
+    a->u = sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_BSDF);
+}
+
+/* path_arrival, and on a hit its numbers. */
+WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+                             const FilmBuffers* film, Arrival* a) {
+    if (!path_arrival(path, params, slot, scene, film, a)) return false;
+    arrival_numbers(params, a);
     return true;
 }
 

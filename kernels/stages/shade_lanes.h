@@ -40,6 +40,7 @@
 #include "lights/light_lanes.inc"
 #include "stages/scatter.inc"
 #include "stages/surface.inc"
+#include "common/rng_lanes.inc"
 /* WF_W stays WF_LANE_WIDTH to the end of the file: the code below speaks its vocabulary. */
 
 /* Room for a whole work-group, in whole runs of lanes. */
@@ -63,15 +64,14 @@ enum LaneField {
     WF_LANE_TRIANGLE = WF_LANE_LIGHT_NORMAL + 3, /* the arrival (WF_SURFACE_IN_LANES): a bit pattern, */
     WF_LANE_HIT, /* t, b1, b2 */
     WF_LANE_DIRECTION = WF_LANE_HIT + 3, WF_LANE_PDF_PREVIOUS = WF_LANE_DIRECTION + 3, WF_LANE_GOES_ON,
+    WF_LANE_PIXEL, WF_LANE_SAMPLE, WF_LANE_DEPTH, /* bit patterns */
     WF_LANE_INPUTS, /* the inputs above, the surface's emission and the scatter below */
     WF_LANE_EMITS = WF_LANE_INPUTS, WF_LANE_EMITTED,
     WF_LANE_SHADOW = WF_LANE_EMITTED + 3, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
     WF_LANE_SHADOW_LIGHT = WF_LANE_SHADOW_SEGMENT + 3, WF_LANE_CONTINUES = WF_LANE_SHADOW_LIGHT + 3,
     WF_LANE_NEXT_THROUGHPUT, WF_LANE_RAY_ORIGIN = WF_LANE_NEXT_THROUGHPUT + 3,
     WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3,
-    WF_LANE_ROULETTE_U, /* not the lanes': handed from shade_lanes_put to shade_lanes_get, */
-    WF_LANE_PIXEL,      /* and with the surface in lanes, as bit patterns, */
-    WF_LANE_DEPTH,
+    WF_LANE_ROULETTE_U, /* not the lanes' input: handed from shade_lanes_put to shade_lanes_get */
     WF_LANE_FIELDS
 };
 
@@ -131,8 +131,10 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
 }
 
 #if WF_SURFACE_IN_LANES
-/* A path that hit, as shade_arrival found it: the lanes find its surface. */
-WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a) {
+/* A path that hit, as path_arrival found it, and its numbers where
+ * arrival_numbers drew them (else the lanes draw them: shade_lanes_numbers):
+ * the lanes find its surface. */
+WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a, bool numbers) {
     WF_LANE_AT(soa, WF_LANE_TRIANGLE, at) = as_float(a->triangle);
     WF_LANE_AT(soa, WF_LANE_HIT, at) = a->t;
     WF_LANE_AT(soa, WF_LANE_HIT + 1, at) = a->b1;
@@ -141,14 +143,16 @@ WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arriva
     WF_LANE_AT(soa, WF_LANE_PDF_PREVIOUS, at) = a->pdf_previous;
     lanes_put3(soa, WF_LANE_THROUGHPUT, at, a->throughput);
     WF_LANE_AT(soa, WF_LANE_GOES_ON, at) = a->goes_on ? 1.0f : 0.0f;
+    WF_LANE_AT(soa, WF_LANE_PIXEL, at) = as_float(a->pixel);
+    WF_LANE_AT(soa, WF_LANE_SAMPLE, at) = as_float(a->sample);
+    WF_LANE_AT(soa, WF_LANE_DEPTH, at) = as_float(a->depth);
+    if (!numbers) return;
     WF_LANE_AT(soa, WF_LANE_LIGHT_U, at) = a->light_u.x;
     WF_LANE_AT(soa, WF_LANE_LIGHT_U + 1, at) = a->light_u.y;
     WF_LANE_AT(soa, WF_LANE_LIGHT_U + 2, at) = a->light_u.z;
     WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at) = a->light_u.w;
     lanes_put3(soa, WF_LANE_U, at, a->u.xyz);
     WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at) = a->u.w;
-    WF_LANE_AT(soa, WF_LANE_PIXEL, at) = as_float(a->pixel);
-    WF_LANE_AT(soa, WF_LANE_DEPTH, at) = as_float(a->depth);
 }
 
 /* The emission the lanes found for the path put at `at`, added to it as
@@ -208,6 +212,26 @@ WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* r
 #define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
 
 #if WF_SURFACE_IN_LANES
+/* Whether the lanes draw the numbers of the arrivals put (shade_lanes_numbers):
+ * they hash as the independent sampler does; the Sobol sampler's are drawn
+ * a path at a time. */
+WF_INLINE bool lanes_draw_numbers(const RenderParams* params) { return params->sampler == WF_SAMPLER_INDEPENDENT; }
+
+/* arrival_numbers for the arrivals put at [first, first + WF_LANE_WIDTH), as
+ * the independent sampler draws them: the light's group and the BSDF's. A path
+ * that ends here, or one in a scene without lights, ignores what it gets. */
+WF_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params) {
+    const LUINT pixel = LASUINT(WF_LANE_LOAD(WF_LANE_PIXEL, first));
+    const LUINT sample = LASUINT(WF_LANE_LOAD(WF_LANE_SAMPLE, first));
+    const LUINT depth = LASUINT(WF_LANE_LOAD(WF_LANE_DEPTH, first));
+    LREAL u[4];
+    LFN(rng_uniform4)(params->seed, pixel, sample, depth, WF_RNG_LIGHT, u);
+    for (int i = 0; i < 4; ++i) WF_LANE_STORE(u[i], WF_LANE_LIGHT_U + i, first);
+    LFN(rng_uniform4)(params->seed, pixel, sample, depth, WF_RNG_BSDF, u);
+    for (int i = 0; i < 3; ++i) WF_LANE_STORE(u[i], WF_LANE_U + i, first);
+    WF_LANE_STORE(u[3], WF_LANE_ROULETTE_U, first);
+}
+
 /* shade_surface in lanes, for the arrivals put at [first, first + WF_LANE_WIDTH):
  * the point and its normals, the emission found (into the lanes' fields, for
  * shade_lanes_emission), the material's factors, the frame and wo (the opaque
@@ -282,6 +306,7 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     LFN(ScatterSurface) s;
     LFN(ScatterLight) l;
 #if WF_SURFACE_IN_LANES
+    if (lanes_draw_numbers(params)) shade_lanes_numbers(soa, first, params);
     shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);
 #else
     p.base_color = WF_LANE_LOAD_RGB(WF_LANE_BASE, first);
