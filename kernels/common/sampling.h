@@ -13,7 +13,8 @@ WF_DEVICE_BEGIN
 
 /* An orthonormal basis around the unit vector n (Duff et al., "Building an
  * Orthonormal Basis, Revisited", JCGT 2017): no branch on a preferred axis,
- * continuous except at n.z = -0. */
+ * continuous except at n.z = -0. The host's (the ray bench); shade's frame is
+ * stages/surface.inc's lane form of the same arithmetic. */
 WF_INLINE void orthonormal_basis(float3 n, float3* t, float3* b) {
     const float sign = copysign(1.0f, n.z);
     const float a = -1.0f / (sign + n.z);

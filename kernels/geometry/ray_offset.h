@@ -18,9 +18,11 @@
  * surely in (0, t_max), so neither surface is found again, at any angle.
  * No fixed epsilon: every step scales with the coordinates and vanishes with
  * them, so a scene behaves the same at any scale and any translation.
- * The kernels spawn their rays with stages/scatter.inc's lane form of
- * offset_ray_origin and segment_to_surface, the same arithmetic a lane at a
- * time; these serve the host (tests/kernels/test_ray_offset.cpp, the ray bench).
+ * The kernels find their hit points with stages/surface.inc's lane form of
+ * interpolate_triangle and interpolation_error, and spawn their rays with
+ * stages/scatter.inc's of offset_ray_origin and segment_to_surface, the same
+ * arithmetic a lane at a time; these serve the host
+ * (tests/kernels/test_ray_offset.cpp, the ray bench).
  *
  * Why the bound holds: b0 = 1 - b1 - b2 is computed with an absolute error of
  * at most gamma_2 (1 + b1 + b2), so the float weights sum to 1 + s with

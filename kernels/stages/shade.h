@@ -13,11 +13,13 @@
  * emission its ray finds is counted whole.
  *
  * In steps, so that the group schedule can run all but the first in SIMD
- * lanes (stages/shade_lanes.h): shade_surface (the above up to a BsdfQuery),
- * shade_light (the light sample: lights/light_lanes.inc for emissive
- * triangles), the BSDF core (the BSDF at the light sample, and a sample),
- * and the scatter (the shadow and continuation rays, stages/scatter.inc, and
- * the next queue). shade_path runs them for one path at width 1. */
+ * lanes (stages/shade_lanes.h): shade_arrival (the path state, a miss, the
+ * sample numbers), shade_surface (the above up to a BsdfQuery:
+ * stages/surface.inc), shade_light (the light sample: lights/light_lanes.inc
+ * for emissive triangles), the BSDF core (the BSDF at the light sample, and a
+ * sample), and the scatter (the shadow and continuation rays,
+ * stages/scatter.inc, and the next queue). shade_path runs them for one path
+ * at width 1. */
 #ifndef WF_STAGE_SHADE_H
 #define WF_STAGE_SHADE_H
 
@@ -93,7 +95,8 @@ typedef struct Arrival {
     float4 u;       /* BSDF sampling's three, then roulette's */
 } Arrival;
 
-/* The surface, which the lane forms below share with the group schedule's lanes. */
+/* The scatter's and the surface's arithmetic, written once for any lane
+ * width: width 1 here, the group schedule's lanes at theirs (stages/shade_lanes.h). */
 #define WF_W 1
 #include "lanes/lane_width.inc"
 #include "stages/scatter.inc"

@@ -7,8 +7,12 @@
  * bsdf/kinds/opaque.inc, stages/scatter.inc), and each path's scatter read
  * back (shade_lanes_get) for write_scatter. The light sample is taken in
  * lanes where every light is an emissive triangle whose emission is its
- * material's factor (WF_LIGHTS_IN_LANES), else by shade_light before the
- * path is put. Its answers are width 1's to the bit
+ * material's factor (WF_LIGHTS_IN_LANES), else by shade_light a path at a
+ * time. Where no texture shapes a surface and every material has lanes
+ * (WF_SURFACE_IN_LANES), every hit is put right after its arrival
+ * (shade_lanes_put_arrival) and the lanes also find its surface
+ * (stages/surface.inc) and draw its numbers; the emission it found comes
+ * back with its scatter (shade_lanes_emission). Its answers are width 1's to the bit
  * (tests/kernels/test_bsdf_kinds.cpp, tests/integrator/test_determinism.cpp),
  * so the group schedule makes the megakernel's bytes. Device only. */
 #ifndef WF_SHADE_LANES_H
