@@ -44,20 +44,9 @@ TEST(Scatter, RoundAwayIsNextafterTowardTheStepsInfinity) {
         moved.push_back(std::copysign(std::pow(10.0f, exponent(rng)), sign(rng)));
         step.push_back(sign(rng));
     }
-    const OpenClDevice& device = test::cpu_device();
     const cl::Program program = test::build_test_program(expand_kernel_source("stages/scatter_probe.cl"));
-    cl::Buffer in_moved(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, moved.size() * sizeof(float),
-                        moved.data());
-    cl::Buffer in_step(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, step.size() * sizeof(float),
-                       step.data());
-    cl::Buffer output(device.context, CL_MEM_WRITE_ONLY, 3 * moved.size() * sizeof(float));
-    cl::Kernel kernel(program, "round_away_probe");
-    kernel.setArg(0, in_moved);
-    kernel.setArg(1, in_step);
-    kernel.setArg(2, output);
-    device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(moved.size() / 8), cl::NullRange);
-    std::vector<float> out(3 * moved.size());
-    device.queue.enqueueReadBuffer(output, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+    const std::vector<float> out =
+        test::run_probe(program, "round_away_probe", moved.size() / 8, 3 * moved.size(), moved, step);
     int differing = 0;
     for (size_t i = 0; i < moved.size(); ++i) {
         const float expected = out[3 * i];

@@ -236,16 +236,7 @@ TEST(Stability, MisWeightsHoldWherePdfSquaresOverflow) {
                                          {{0.0f, 0.0f}}, {{3e19f, 1e19f}}};
     const cl::Program program = test::build_test_program(
         expand_kernel_source("common/sampling.h") + kPowerHeuristicKernel, "-cl-fast-relaxed-math");
-    const OpenClDevice& device = test::cpu_device();
-    cl::Buffer in(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, pdfs.size() * sizeof(cl_float2),
-                  const_cast<cl_float2*>(pdfs.data()));
-    cl::Buffer out(device.context, CL_MEM_WRITE_ONLY, pdfs.size() * sizeof(float));
-    cl::Kernel kernel(program, "weigh");
-    kernel.setArg(0, in);
-    kernel.setArg(1, out);
-    device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(pdfs.size()), cl::NullRange);
-    std::vector<float> weight(pdfs.size());
-    device.queue.enqueueReadBuffer(out, CL_TRUE, 0, weight.size() * sizeof(float), weight.data());
+    const std::vector<float> weight = test::run_probe(program, "weigh", pdfs.size(), pdfs.size(), pdfs);
 
     // Beside it, the light sample's weight, which the scatter (kernels/stages/scatter.inc)
     // computes a lane at a time, at widths 1 and 8: the same pdfs, padded to
@@ -253,15 +244,8 @@ TEST(Stability, MisWeightsHoldWherePdfSquaresOverflow) {
     std::vector<cl_float2> lanes = pdfs;
     while (lanes.size() % 8 != 0) lanes.push_back({{1.0f, 1.0f}});
     const cl::Program scatter = test::build_test_program(expand_kernel_source("stages/scatter_probe.cl"));
-    cl::Buffer lane_in(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lanes.size() * sizeof(cl_float2),
-                       lanes.data());
-    cl::Buffer lane_out(device.context, CL_MEM_WRITE_ONLY, 2 * lanes.size() * sizeof(float));
-    cl::Kernel probe(scatter, "power_heuristic_probe");
-    probe.setArg(0, lane_in);
-    probe.setArg(1, lane_out);
-    device.queue.enqueueNDRangeKernel(probe, cl::NullRange, cl::NDRange(lanes.size() / 8), cl::NullRange);
-    std::vector<float> lane_weight(2 * lanes.size());
-    device.queue.enqueueReadBuffer(lane_out, CL_TRUE, 0, lane_weight.size() * sizeof(float), lane_weight.data());
+    const std::vector<float> lane_weight =
+        test::run_probe(scatter, "power_heuristic_probe", lanes.size() / 8, 2 * lanes.size(), lanes);
     for (size_t i = 0; i < pdfs.size(); ++i) {
         const double a = pdfs[i].s[0], b = pdfs[i].s[1];
         const double expected = a > 0.0 ? a * a / (a * a + b * b) : 0.0; // exact in double

@@ -109,6 +109,27 @@ bool all_finite(const Image& image);
 // throws std::runtime_error carrying the build log.
 cl::Program build_test_program(const std::string& source, const std::string& options = "");
 
+// Runs kernel `name` of `program` on cpu_device() over `work_items`
+// work-items, its arguments one read-only buffer per input, in order, then an
+// output of `out_floats` floats, which it returns.
+template <typename... Input>
+std::vector<float> run_probe(const cl::Program& program, const char* name, size_t work_items, size_t out_floats,
+                             const std::vector<Input>&... inputs) {
+    const OpenClDevice& device = cpu_device();
+    cl::Kernel kernel(program, name);
+    std::vector<cl::Buffer> buffers;
+    (buffers.emplace_back(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, inputs.size() * sizeof(Input),
+                          const_cast<Input*>(inputs.data())),
+     ...);
+    cl::Buffer output(device.context, CL_MEM_WRITE_ONLY, out_floats * sizeof(float));
+    buffers.push_back(output);
+    for (cl_uint i = 0; i < buffers.size(); ++i) kernel.setArg(i, buffers[i]);
+    device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(work_items), cl::NullRange);
+    std::vector<float> out(out_floats);
+    device.queue.enqueueReadBuffer(output, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+    return out;
+}
+
 // A glTF file written for a test: one node per mesh (with a uniform scale),
 // each mesh one non-indexed triangle primitive whose float POSITIONs live in
 // one buffer embedded as a base64 data URI.
