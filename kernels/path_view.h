@@ -88,15 +88,16 @@ WF_INLINE bool queue_slot(uint pool_size, __global const uint* queues, volatile 
 }
 
 /* The slots a work-item of a ray-tracing stage takes from `queue`, into
- * slot[], and how many: WF_TRACE_WIDTH consecutive entries of its
- * work-group's share of the queue, so that the group's first 1 / WF_TRACE_WIDTH
- * of work-items take them all and the rest none. */
+ * slot[], and how many: `per_item` consecutive entries of its work-group's
+ * share of the queue (WF_TRACE_WIDTH, or intersect's WF_TRACE_SLOTS:
+ * geometry/trace_width.h), so that the group's first 1 / per_item of
+ * work-items take them all and the rest none. */
 WF_INLINE uint queue_slots_to_trace(uint pool_size, __global const uint* queues, volatile __global const uint* counters,
-                                    uint queue, uint* slot) {
-    const uint group_size = get_local_size(0), first = WF_TRACE_WIDTH * get_local_id(0);
+                                    uint queue, uint per_item, uint* slot) {
+    const uint group_size = get_local_size(0), first = per_item * get_local_id(0);
     const uint index = get_group_id(0) * group_size + first, length = counters[queue];
     if (first >= group_size || index >= length) return 0u;
-    const uint count = min(min((uint)WF_TRACE_WIDTH, group_size - first), length - index);
+    const uint count = min(min(per_item, group_size - first), length - index);
     for (uint i = 0; i < count; ++i) slot[i] = queues[queue * pool_size + index + i];
     return count;
 }

@@ -15,4 +15,13 @@
 #define WF_TRACE_WIDTH 1
 #endif
 
+/* The slots one work-item of intersect takes: on a CPU, eight, so that rays
+ * from one point (camera rays) can go as a packet (geometry/bvh_packet.h),
+ * the others WF_TRACE_WIDTH at a time; on a GPU, WF_TRACE_WIDTH. */
+#if WF_GPU_TRAVERSAL
+#define WF_TRACE_SLOTS WF_TRACE_WIDTH
+#else
+#define WF_TRACE_SLOTS 8
+#endif
+
 #endif

@@ -133,12 +133,17 @@ WF_INLINE float edge_function_exact_sign(float px, float py, float qx, float qy)
 #endif
 
 /* The test at four triangles a time (CornerLanes, TriangleLanes,
- * intersect_triangles), and in a GPU's traversal at one (..._x1). */
+ * intersect_triangles); in a GPU's traversal at one (..._x1); and in a CPU's
+ * packets, eight rays against one triangle (..._x8, geometry/bvh_packet.h). */
 #define WF_TW 4
 #include "geometry/triangle_lanes.inc"
 #undef WF_TW
 #if WF_GPU_TRAVERSAL
 #define WF_TW 1
+#include "geometry/triangle_lanes.inc"
+#undef WF_TW
+#elif defined(__OPENCL_C_VERSION__)
+#define WF_TW 8
 #include "geometry/triangle_lanes.inc"
 #undef WF_TW
 #endif
