@@ -145,6 +145,19 @@ WF_INLINE uint local_slots_to_trace(__local const LocalQueue* q, uint lid, uint 
     return count;
 }
 
+/* The extension queue's slots work-item `lid` traces, WF_TRACE_SLOTS of
+ * them: the queue's camera rays, from `cameras` on, in runs of their own,
+ * so that a run of them is a packet (stages/intersect.h). */
+WF_INLINE uint extension_slots_to_trace(__local const LocalQueue* q, uint cameras, uint lid, uint* slot) {
+    const uint before = (cameras + WF_TRACE_SLOTS - 1u) / WF_TRACE_SLOTS; /* work-items for those before */
+    const uint first = lid < before ? WF_TRACE_SLOTS * lid : cameras + WF_TRACE_SLOTS * (lid - before);
+    const uint end = lid < before ? cameras : q->length;
+    if (first >= end) return 0u;
+    const uint count = min((uint)WF_TRACE_SLOTS, end - first);
+    for (uint i = 0u; i < count; ++i) slot[i] = q->slots[first + i];
+    return count;
+}
+
 __kernel void group_wavefront(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local LocalQueue queue[WF_QUEUE_COUNT]; /* the global queues' local twins, by QueueId */
@@ -155,9 +168,14 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     __local uint lanes_length;
 #endif
     __local uint samples_started[WF_LOCAL_SIZE]; /* in this launch, by slot - first_slot */
+    /* The extension queue's camera rays start here: the samples started
+     * in the last pass wait in the group's (else unused) regenerate queue
+     * until it ends, and then join the queue's tail together. */
+    __local uint cameras;
     const uint lid = get_local_id(0), first_slot = get_group_id(0) * get_local_size(0);
     samples_started[lid] = 0u;
     if (lid < WF_QUEUE_COUNT) queue[lid].length = 0u;
+    if (lid == 0) cameras = 0u;
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
@@ -177,7 +195,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
         {
             uint slot[WF_TRACE_SLOTS];
-            const uint count = local_slots_to_trace(&queue[WF_QUEUE_EXTEND], lid, WF_TRACE_SLOTS, slot);
+            const uint count = extension_slots_to_trace(&queue[WF_QUEUE_EXTEND], cameras, lid, slot);
             if (count > 0u) intersect_paths(&path, slot, count, &scene);
             for (uint i = 0u; i < count; ++i) prefetch_surface(&scene, path_hit_triangle(&path, slot[i]));
         }
@@ -269,7 +287,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             if (samples_started[slot - first_slot] < WF_GROUP_SAMPLES &&
                 start_camera_sample(&path, &params, &camera, slot)) {
                 ++samples_started[slot - first_slot];
-                local_push(&queue[WF_QUEUE_EXTEND], slot);
+                local_push(&queue[WF_QUEUE_REGENERATE], slot);
             }
         }
         barrier(CLK_LOCAL_MEM_FENCE);
@@ -278,6 +296,11 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             entered[WF_QUEUE_CONTINUE] += queue[WF_QUEUE_CONTINUE].length;
             entered[WF_QUEUE_FINISHED] += queue[WF_QUEUE_FINISHED].length;
             queue[WF_QUEUE_SHADOW].length = queue[WF_QUEUE_CONTINUE].length = queue[WF_QUEUE_FINISHED].length = 0u;
+            cameras = queue[WF_QUEUE_EXTEND].length;
+            for (uint i = 0u; i < queue[WF_QUEUE_REGENERATE].length; ++i)
+                queue[WF_QUEUE_EXTEND].slots[cameras + i] = queue[WF_QUEUE_REGENERATE].slots[i];
+            queue[WF_QUEUE_EXTEND].length += queue[WF_QUEUE_REGENERATE].length;
+            queue[WF_QUEUE_REGENERATE].length = 0u;
         }
         barrier(CLK_LOCAL_MEM_FENCE);
     }

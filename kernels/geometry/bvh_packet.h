@@ -54,9 +54,19 @@ typedef struct PacketBox {
 typedef struct Packet {
     PacketRay ray;
     PacketBox box;
-    WatertightRay lane_ray[WF_PACKET_RAYS]; /* each lane's own, for a leaf few lanes reach */
-    uint32_t lanes;                         /* bit i: lane i holds a ray of the caller's */
+    WatertightRay first; /* lane 0's; with shear[] and scale[], each lane's, for a leaf few lanes reach */
+    float shear_x[WF_PACKET_RAYS], shear_y[WF_PACKET_RAYS], scale_z[WF_PACKET_RAYS];
+    uint32_t lanes; /* bit i: lane i holds a ray of the caller's */
 } Packet;
+
+/* Lane `r`'s WatertightRay, as watertight_ray gives it. */
+WF_INLINE WatertightRay packet_lane_ray(const Packet* p, uint32_t r) {
+    WatertightRay w = p->first;
+    w.shear_x = p->shear_x[r];
+    w.shear_y = p->shear_y[r];
+    w.scale_z = p->scale_z[r];
+    return w;
+}
 
 WF_INLINE float min_lane(float8 v) {
     const float4 a = min(v.lo, v.hi);
@@ -68,46 +78,58 @@ WF_INLINE float max_lane(float8 v) {
     return max(max(a.x, a.y), max(a.z, a.w));
 }
 
+/* Row k (0: x, 1: y, 2: z) of three. */
+WF_INLINE float8 packet_row(float8 x, float8 y, float8 z, int k) { return k == 0 ? x : (k == 1 ? y : z); }
+
 /* Packs rays [0, count), 2 to WF_PACKET_RAYS of them, the rest of the lanes
- * repeating ray 0; 0 when they do not make a packet (see above). */
+ * repeating ray 0; 0 when they do not make a packet (see above). Each lane's
+ * numbers are those watertight_ray and box_ray give its ray, computed by
+ * the same operations eight at a time. */
 WF_INLINE int packet_start(Packet* p, WF_GLOBAL const BvhNode* nodes, const float3* origin, const float3* direction,
                            uint32_t count) {
-    float sx[WF_PACKET_RAYS], sy[WF_PACKET_RAYS], sz[WF_PACKET_RAYS];
-    float ix[WF_PACKET_RAYS], iy[WF_PACKET_RAYS], iz[WF_PACKET_RAYS];
     const BoxRay first = box_ray(nodes, origin[0], direction[0]);
     if (first.unbounded) return 0;
+    float dx[WF_PACKET_RAYS], dy[WF_PACKET_RAYS], dz[WF_PACKET_RAYS];
     for (uint32_t i = 0; i < WF_PACKET_RAYS; ++i) {
         const uint32_t r = i < count ? i : 0u;
         if (any(origin[r] != origin[0])) return 0;
-        const WatertightRay w = watertight_ray(origin[r], direction[r]);
-        const BoxRay b = box_ray(nodes, origin[r], direction[r]);
-        if (i > 0 && w.kz != p->lane_ray[0].kz) return 0;
-        if (b.near_row[0] != first.near_row[0] || b.near_row[1] != first.near_row[1] ||
-            b.near_row[2] != first.near_row[2])
-            return 0;
-        p->lane_ray[i] = w;
-        sx[i] = w.shear_x;
-        sy[i] = w.shear_y;
-        sz[i] = w.scale_z;
-        ix[i] = b.inv_direction.x;
-        iy[i] = b.inv_direction.y;
-        iz[i] = b.inv_direction.z;
+        dx[i] = direction[r].x;
+        dy[i] = direction[r].y;
+        dz[i] = direction[r].z;
     }
-    const WatertightRay* w = &p->lane_ray[0];
-    p->ray.origin.x = (float8)(w->origin.x);
-    p->ray.origin.y = (float8)(w->origin.y);
-    p->ray.origin.z = (float8)(w->origin.z);
-    p->ray.shear_x = vload8(0, sx);
-    p->ray.shear_y = vload8(0, sy);
-    p->ray.scale_z = vload8(0, sz);
-    p->ray.kx = w->kx;
-    p->ray.ky = w->ky;
-    p->ray.kz = w->kz;
-    p->box.near_origin = first.near_origin;
+    const float8 x = vload8(0, dx), y = vload8(0, dy), z = vload8(0, dz);
+    /* box_ray's reciprocals, whose signs must be lane 0's on every axis. */
+    const float flt_max = 0x1.fffffep127f;
+    p->box.inv_x = max(min(1.0f / x, flt_max), -flt_max);
+    p->box.inv_y = max(min(1.0f / y, flt_max), -flt_max);
+    p->box.inv_z = max(min(1.0f / z, flt_max), -flt_max);
+    const uint32_t all = (1u << WF_PACKET_RAYS) - 1u;
+    if (lane_bits8(isless(p->box.inv_x, 0.0f)) != (first.near_row[0] ? all : 0u) ||
+        lane_bits8(isless(p->box.inv_y, 0.0f)) != (first.near_row[1] & 1 ? all : 0u) ||
+        lane_bits8(isless(p->box.inv_z, 0.0f)) != (first.near_row[2] & 1 ? all : 0u))
+        return 0;
+    /* watertight_ray's axis of the largest |component|, lane 0's in every lane. */
+    p->first = watertight_ray(origin[0], direction[0]);
+    const float8 ax = fabs(x), ay = fabs(y), az = fabs(z);
+    const int8 is_x = isgreaterequal(ax, ay) & isgreaterequal(ax, az);
+    const int8 is_y = ~is_x & isgreaterequal(ay, az);
+    const int8 kz = p->first.kz == 0 ? is_x : (p->first.kz == 1 ? is_y : ~is_x & ~is_y);
+    if (lane_bits8(kz) != all) return 0;
+    const float8 d_kz = packet_row(x, y, z, p->first.kz);
+    vstore8(packet_row(x, y, z, p->first.kx) / d_kz, 0, p->shear_x);
+    vstore8(packet_row(x, y, z, p->first.ky) / d_kz, 0, p->shear_y);
+    vstore8(1.0f / d_kz, 0, p->scale_z);
+    p->ray.origin.x = (float8)(p->first.origin.x);
+    p->ray.origin.y = (float8)(p->first.origin.y);
+    p->ray.origin.z = (float8)(p->first.origin.z);
+    p->ray.shear_x = vload8(0, p->shear_x);
+    p->ray.shear_y = vload8(0, p->shear_y);
+    p->ray.scale_z = vload8(0, p->scale_z);
+    p->ray.kx = p->first.kx;
+    p->ray.ky = p->first.ky;
+    p->ray.kz = p->first.kz;
+    p->box.near_origin = first.near_origin; /* one origin: every lane's */
     p->box.far_origin = first.far_origin;
-    p->box.inv_x = vload8(0, ix);
-    p->box.inv_y = vload8(0, iy);
-    p->box.inv_z = vload8(0, iz);
     p->box.inv_lo = make_float3(min_lane(p->box.inv_x), min_lane(p->box.inv_y), min_lane(p->box.inv_z));
     p->box.inv_hi = make_float3(max_lane(p->box.inv_x), max_lane(p->box.inv_y), max_lane(p->box.inv_z));
     for (int a = 0; a < 3; ++a) p->box.near_row[a] = first.near_row[a];
@@ -215,7 +237,8 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
             } else {
                 for (uint32_t m = lanes; m != 0u; m &= m - 1u) {
                     const uint32_t r = lowest_bit(m);
-                    const WatertightRay* ray = &p->lane_ray[r];
+                    const WatertightRay lane_ray = packet_lane_ray(p, r);
+                    const WatertightRay* ray = &lane_ray;
                     for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
                         WF_GLOBAL const TriangleBlock* b = triangles + block;
                         const TriangleLanes four = block_lanes(ray, b);
