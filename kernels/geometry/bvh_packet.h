@@ -87,12 +87,13 @@ WF_INLINE float8 packet_row(float8 x, float8 y, float8 z, int k) { return k == 0
  * the same operations eight at a time. */
 WF_INLINE int packet_start(Packet* p, WF_GLOBAL const BvhNode* nodes, const float3* origin, const float3* direction,
                            uint32_t count) {
+    for (uint32_t i = 1; i < count; ++i)
+        if (any(origin[i] != origin[0])) return 0; /* the usual answer for rays other than a camera's: first */
     const BoxRay first = box_ray(nodes, origin[0], direction[0]);
     if (first.unbounded) return 0;
     float dx[WF_PACKET_RAYS], dy[WF_PACKET_RAYS], dz[WF_PACKET_RAYS];
     for (uint32_t i = 0; i < WF_PACKET_RAYS; ++i) {
         const uint32_t r = i < count ? i : 0u;
-        if (any(origin[r] != origin[0])) return 0;
         dx[i] = direction[r].x;
         dy[i] = direction[r].y;
         dz[i] = direction[r].z;
