@@ -33,7 +33,8 @@ __kernel void generate(WF_STAGE_PARAMS) {
 __kernel void intersect(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     uint slot[WF_TRACE_SLOTS];
-    const uint count = queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_EXTEND, WF_TRACE_SLOTS, slot);
+    const uint count =
+        queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_EXTEND, WF_TRACE_SLOTS, slot);
     if (count > 0u) intersect_paths(&path, slot, count, &scene);
 }
 
@@ -78,7 +79,8 @@ __kernel void intersect_shadow(WF_STAGE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
-    const uint count = queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_SHADOW, WF_TRACE_WIDTH, slot);
+    const uint count =
+        queue_slots_to_trace(params.pool_size, queues, counters, WF_QUEUE_SHADOW, WF_TRACE_WIDTH, slot);
     if (count > 0u) trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
     group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], count, scratch);
     queue_push_each(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next, count, scratch);
@@ -134,13 +136,13 @@ typedef struct LocalQueue {
 
 WF_INLINE void local_push(__local LocalQueue* q, uint slot) { q->slots[atomic_inc(&q->length)] = slot; }
 
-/* The slots work-item `lid` traces from a local queue, `per_item` of them
+/* The slots work-item `lid` traces from a local queue, WF_TRACE_WIDTH of them
  * (geometry/trace_width.h), as queue_slots_to_trace takes them from a global
  * one; returns how many (none for the group's later work-items). */
-WF_INLINE uint local_slots_to_trace(__local const LocalQueue* q, uint lid, uint per_item, uint* slot) {
-    const uint first = per_item * lid;
+WF_INLINE uint local_slots_to_trace(__local const LocalQueue* q, uint lid, uint* slot) {
+    const uint first = WF_TRACE_WIDTH * lid;
     if (first >= q->length) return 0u;
-    const uint count = min(per_item, q->length - first);
+    const uint count = min((uint)WF_TRACE_WIDTH, q->length - first);
     for (uint i = 0u; i < count; ++i) slot[i] = q->slots[first + i];
     return count;
 }
@@ -268,7 +270,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         }
         {
             uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
-            const uint count = local_slots_to_trace(&queue[WF_QUEUE_SHADOW], lid, WF_TRACE_WIDTH, slot);
+            const uint count = local_slots_to_trace(&queue[WF_QUEUE_SHADOW], lid, slot);
             if (count > 0u) trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
             shadow_rays += count;
             for (uint i = 0u; i < count; ++i) local_push(&queue[next[i]], slot[i]);
