@@ -21,7 +21,10 @@
  * entry exceeds that greatest exit (against the greatest window end), which
  * is when each lane's own test would cull it. A visit goes on to the child
  * of least entry and pushes the others, each dropped when popped if its
- * entry has since passed every lane's window, as bvh_traverse does.
+ * entry has since passed every lane's window, as bvh_traverse does, and
+ * asked for from memory as it is pushed (on MetalRoughSpheres, whose 50 MB
+ * of triangles miss the caches, 6-9% faster camera rays; the same on scenes
+ * that fit).
  *
  * Packets only where they pay: the rays must share an origin (camera rays
  * of a pinhole), the watertight test's permutation (the axis of each
@@ -281,6 +284,7 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
                     stack_entry[stack_size] = entry[slot];
                     stack_child[stack_size] = node->child[slot];
                     stack_lanes[stack_size] = (uchar)child_lanes[slot];
+                    prefetch_child(nodes, triangles, stack_child[stack_size]);
                     ++stack_size;
                 }
                 child = node->child[next];
