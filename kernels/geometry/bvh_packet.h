@@ -13,18 +13,22 @@
  * packet may visit more than any one of its rays would, never less.
  *
  * How: one box test for the packet, conservative for all of its rays. Every
- * ray's distance to a plane is fl(fl(b - o) * r), o its moved origin and r
- * its clamped reciprocal direction (box_ray), and rounding is monotone; so
- * from the lanes' extreme o and r (of one sign on each axis, required) the
- * least entry and greatest exit over the lanes are bounded below and above
- * by the same operations on those extremes. A box is culled when that least
- * entry exceeds that greatest exit (against the greatest window end), which
- * is when each lane's own test would cull it. A visit goes on to the child
- * of least entry and pushes the others, each dropped when popped if its
- * entry has since passed every lane's window, as bvh_traverse does, and
- * asked for from memory as it is pushed (on MetalRoughSpheres, whose 50 MB
- * of triangles miss the caches, 6-9% faster camera rays; the same on scenes
- * that fit).
+ * ray's distance to a plane is fl(fl(b - o) * r), o the moved origin (box_ray;
+ * one for all, since the rays share their origin) and r the ray's clamped
+ * reciprocal direction, and rounding is monotone; so from the lanes' least
+ * and greatest r on each axis (of one sign, required) the least entry and
+ * greatest exit over the lanes are bounded below and above by the same
+ * operations on those extremes. A child that bound cannot cull is tested
+ * again lane by lane (each lane's own child_entries, to the bit), so a lane
+ * goes down only where its own box test lets it, and a child no lane meets is
+ * dropped. A visit goes on to the child of least entry and pushes the
+ * others, each with its lanes, dropped when popped if its entry has since
+ * passed every lane's window, as bvh_traverse does, and asked for from
+ * memory as it is pushed (on MetalRoughSpheres, whose 50 MB of triangles
+ * miss the caches, 6-9% faster camera rays; the same on scenes that fit). A
+ * leaf that WF_PACKET_LEAF_LANES lanes or more reach is tested a triangle at
+ * a time against the packet; one that fewer reach, a ray at a time against
+ * four triangles, as a lone ray tests it.
  *
  * Packets only where they pay: the rays must share an origin (camera rays
  * of a pinhole), the watertight test's permutation (the axis of each
@@ -44,7 +48,7 @@
 #define WF_PACKET_MIN_RAYS 4
 #endif
 
-/* The packet's box test: the moved origins (one origin, so the same in
+/* The packet's box tests: the moved origins (one origin, so the same in
  * every lane), and per axis each lane's reciprocal direction and the
  * lanes' least and greatest. */
 typedef struct PacketBox {
@@ -198,7 +202,8 @@ WF_FORCE_INLINE TriangleLanes_x8 packet_triangle(const PacketRay* ray, WF_GLOBAL
 }
 
 /* Lanes fewer than this test a leaf one ray at a time, four triangles in
- * each test, where the packet's test takes one triangle at a time. */
+ * each test, where the packet's test takes one triangle at a time: the two
+ * cost the same at four lanes of a leaf of four. */
 #define WF_PACKET_LEAF_LANES 4
 
 /* The closest hit in (0, t_max) of each of the packet's rays, into hit[0 .. count). */
