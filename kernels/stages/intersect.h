@@ -25,7 +25,10 @@ WF_INLINE void intersect_paths(PathState* path, const uint* slot, uint count, co
         bvh_closest_hits_packet(scene->nodes, scene->triangles, &packet, count, INFINITY, scene, hit);
     else
 #endif
-        for (uint i = 0; i < count; i += WF_TRACE_WIDTH)
+        /* Bounded by the constant, so that where the two are equal (a GPU)
+         * the one pass indexes the arrays by constants, which keeps them in
+         * registers. */
+        for (uint i = 0; i < WF_TRACE_SLOTS && i < count; i += WF_TRACE_WIDTH)
             bvh_traverse_rays(scene->nodes, scene->triangles, origin + i, direction + i,
                               min((uint)WF_TRACE_WIDTH, count - i), INFINITY, 0, scene, hit + i);
     for (uint i = 0; i < count; ++i) set_path_hit(path, slot[i], hit[i].t, hit[i].u, hit[i].v, hit[i].triangle);
