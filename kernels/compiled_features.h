@@ -25,6 +25,14 @@
 #ifndef WF_HAS_ENVIRONMENT
 #define WF_HAS_ENVIRONMENT 1
 #endif
+/* The general BSDF's lobes over the base (bsdf/bsdf.h): KHR_materials_clearcoat
+ * and KHR_materials_sheen. */
+#ifndef WF_HAS_CLEARCOAT
+#define WF_HAS_CLEARCOAT 1
+#endif
+#ifndef WF_HAS_SHEEN
+#define WF_HAS_SHEEN 1
+#endif
 /* The BSDF kinds (wavefront/bsdf_kinds.h): WF_HAS_BSDF_<KIND>. */
 #ifndef WF_HAS_BSDF_GENERAL
 #define WF_HAS_BSDF_GENERAL 1

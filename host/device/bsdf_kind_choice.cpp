@@ -3,9 +3,14 @@
 
 namespace wf {
 
+bool has_clearcoat(const SceneMaterial& m) { return m.clearcoat > 0.0f; }
+
+bool has_sheen(const SceneMaterial& m) {
+    return m.sheen_color.r > 0.0f || m.sheen_color.g > 0.0f || m.sheen_color.b > 0.0f;
+}
+
 uint32_t bsdf_kind_of(const SceneMaterial& m) {
-    const bool sheen = m.sheen_color.r > 0.0f || m.sheen_color.g > 0.0f || m.sheen_color.b > 0.0f;
-    if (m.transmission > 0.0f || m.clearcoat > 0.0f || sheen) return WF_BSDF_GENERAL;
+    if (m.transmission > 0.0f || has_clearcoat(m) || has_sheen(m)) return WF_BSDF_GENERAL;
     return WF_BSDF_OPAQUE;
 }
 

@@ -13,4 +13,8 @@ namespace wf {
 
 uint32_t bsdf_kind_of(const SceneMaterial& m);
 
+// Whether the material has the lobe at all (its factor above 0).
+bool has_clearcoat(const SceneMaterial& m);
+bool has_sheen(const SceneMaterial& m);
+
 } // namespace wf

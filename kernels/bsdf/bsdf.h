@@ -114,6 +114,7 @@
 
 #include "wavefront/compat.h"
 #include "wavefront/techniques.h"
+#include "compiled_features.h"
 #include "common/sampling.h"
 #include "bsdf/albedo.h"
 #include "bsdf/coat_fresnel.h"
@@ -259,7 +260,7 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
     a.coat_e_average = 1.0f;
     a.coat_multiple = 0.0f;
     a.coat_o = 0.0f;
-    if (p->clearcoat > 0.0f && mu_o > 0.0f) {
+    if (WF_HAS_CLEARCOAT && p->clearcoat > 0.0f && mu_o > 0.0f) {
         if (bsdf_coat_smooth(p)) {
             a.coat_o = p->clearcoat * coat_fresnel(mu_o);
         } else {
@@ -277,7 +278,7 @@ WF_INLINE BsdfAtWo bsdf_albedo(const BsdfParams* p, float mu_o) {
     a.sheen_norm = 1.0f;
     a.sheen_o = 0.0f;
     const float sheen_max = max(max(p->sheen_color.x, p->sheen_color.y), p->sheen_color.z);
-    if (sheen_max > 0.0f && mu_o > 0.0f) {
+    if (WF_HAS_SHEEN && sheen_max > 0.0f && mu_o > 0.0f) {
         const float s = sheen_albedo(mu_o, p->sheen_roughness);
         a.sheen_norm = 1.0f / max(1.0f, s);
         a.sheen_o = sheen_max * s * a.sheen_norm;
@@ -315,7 +316,7 @@ typedef struct BsdfLobeAlbedos {
  * multiple scattering is sampled with the base, by the hemisphere sampler),
  * in proportion to its albedo at wo against the layers' below it. */
 WF_INLINE float bsdf_coat_probability(const BsdfAtWo* a, const BsdfLobeAlbedos* e) {
-    if (!(a->coat_o > 0.0f)) return 0.0f;
+    if (!WF_HAS_CLEARCOAT || !(a->coat_o > 0.0f)) return 0.0f;
     const float e_coat = a->coat_o - a->coat_multiple * (1.0f - a->coat_at_o.x);
     const float e_below = a->under_coat * (a->under_sheen * (e->interface + e->base_eval) + a->sheen_o) +
                           a->coat_multiple * (1.0f - a->coat_at_o.x);
@@ -337,7 +338,8 @@ WF_INLINE float bsdf_loss_probability(const BsdfParams* p, const BsdfAtWo* a, fl
  * sampler, its share of their albedo. The loss's and the sheen's albedos are
  * parts of base_group, so with p_loss it stays at most 1. */
 WF_INLINE float bsdf_sheen_probability(const BsdfAtWo* a, const BsdfLobeAlbedos* e) {
-    return a->sheen_o > 0.0f && e->base_group > 0.0f ? min(a->sheen_o / e->base_group, 1.0f - a->p_loss) : 0.0f;
+    return WF_HAS_SHEEN && a->sheen_o > 0.0f && e->base_group > 0.0f ? min(a->sheen_o / e->base_group, 1.0f - a->p_loss)
+                                                                     : 0.0f;
 }
 
 /* The probability that sampling chooses the interface rather than the base lobes. */
@@ -420,7 +422,7 @@ WF_INLINE float bsdf_base_pdf(const BsdfParams* p, const BsdfAtWo* a, float3 wi)
     if (!(a->p_loss > 0.0f) && !(a->p_sheen > 0.0f)) return hemisphere;
     float pdf = (1.0f - a->p_loss - a->p_sheen) * hemisphere;
     if (a->p_loss > 0.0f) pdf += a->p_loss * loss_pdf(p->roughness, wi.z);
-    if (a->p_sheen > 0.0f) pdf += a->p_sheen * sheen_sample_pdf(p->sheen_roughness, wi.z);
+    if (WF_HAS_SHEEN && a->p_sheen > 0.0f) pdf += a->p_sheen * sheen_sample_pdf(p->sheen_roughness, wi.z);
     return pdf;
 }
 
@@ -462,11 +464,11 @@ WF_INLINE float3 bsdf_eval_pdf_at(const BsdfParams* p, const BsdfAtWo* at, float
         f = f + bsdf_base_eval(p, at, wi.z);
         *pdf += (1.0f - p_interface) * bsdf_base_pdf(p, at, wi);
     }
-    if (at->sheen_o > 0.0f) {
+    if (WF_HAS_SHEEN && at->sheen_o > 0.0f) {
         f = at->under_sheen * f;
         if (wi.z > 0.0f) f = f + p->sheen_color * (at->sheen_norm * sheen_eval(wo, wi, p->sheen_roughness));
     }
-    if (at->coat_o > 0.0f) {
+    if (WF_HAS_CLEARCOAT && at->coat_o > 0.0f) {
         f = at->under_coat * f;
         *pdf = (1.0f - p_coat) * *pdf;
         if (wi.z > 0.0f) {
@@ -509,7 +511,7 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
     s.delta = 0;
     if (wo.z == 0.0f || (!bsdf_has_inside(p) && !(wo.z > 0.0f))) return s;
     const float p_coat = at->p_coat;
-    if (u.x < p_coat) {
+    if (WF_HAS_CLEARCOAT && u.x < p_coat) {
         if (bsdf_coat_smooth(p)) {
             s.wi = make_float3(-wo.x, -wo.y, wo.z);
             s.f = bsdf_gray(at->coat_o / wo.z);
@@ -578,8 +580,8 @@ WF_INLINE BsdfSample bsdf_sample_at(const BsdfParams* p, const BsdfAtWo* at, flo
         const float u_base = min((u.x - p_interface) / (1.0f - p_interface), 0x1.fffffep-1f);
         if (u_base < at->p_loss + at->p_sheen) {
             /* A cosine from the loss's shape or the sheen's sampler, and a uniform azimuth. */
-            const float mu = u_base < at->p_loss ? loss_sample_mu(p->roughness, u.y)
-                                                 : sheen_sample_mu(p->sheen_roughness, u.y);
+            const float mu = !WF_HAS_SHEEN || u_base < at->p_loss ? loss_sample_mu(p->roughness, u.y)
+                                                                  : sheen_sample_mu(p->sheen_roughness, u.y);
             const float r = sqrt(max(0.0f, 1.0f - mu * mu));
             s.wi = make_float3(r * cospi(2.0f * u.z), r * sinpi(2.0f * u.z), mu);
         } else {

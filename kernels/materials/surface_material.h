@@ -14,7 +14,8 @@
 
 /* The clear coat's weight: its factor times its texture's red. */
 WF_INLINE float surface_clearcoat(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
-    return m->clearcoat > 0.0f ? m->clearcoat * surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x : 0.0f;
+    return WF_HAS_CLEARCOAT && m->clearcoat > 0.0f ? m->clearcoat * surface_texture(scene, p, WF_TEXTURE_CLEARCOAT).x
+                                                   : 0.0f;
 }
 
 WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene, const SurfacePoint* p,
@@ -35,10 +36,11 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     b.thin_walled = (m->flags & WF_MATERIAL_THIN_WALLED) != 0u;
     b.clearcoat = surface_clearcoat(m, scene, p);
     b.clearcoat_roughness = m->clearcoat_roughness;
-    if (m->clearcoat > 0.0f) b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
+    if (WF_HAS_CLEARCOAT && m->clearcoat > 0.0f)
+        b.clearcoat_roughness *= surface_texture(scene, p, WF_TEXTURE_CLEARCOAT_ROUGHNESS).y;
     b.sheen_color = vload3(0, m->sheen_color);
     b.sheen_roughness = m->sheen_roughness;
-    if (any(b.sheen_color > 0.0f)) {
+    if (WF_HAS_SHEEN && any(b.sheen_color > 0.0f)) {
         b.sheen_color *= surface_texture(scene, p, WF_TEXTURE_SHEEN_COLOR).xyz;
         b.sheen_roughness *= surface_texture(scene, p, WF_TEXTURE_SHEEN_ROUGHNESS).w;
     }
@@ -98,7 +100,7 @@ WF_INLINE float3 surface_shading_normal(const Scene* scene, const SurfacePoint* 
 WF_INLINE float3 surface_emission(__global const Material* m, const Scene* scene, const SurfacePoint* p, float3 ng,
                                   float3 v) {
     const float3 emission = vload3(0, m->emission) * surface_texture(scene, p, WF_TEXTURE_EMISSIVE).xyz;
-    if (!(m->clearcoat > 0.0f)) return emission;
+    if (!WF_HAS_CLEARCOAT || !(m->clearcoat > 0.0f)) return emission;
     const float mu_o = dot(surface_shading_normal(scene, p, ng, v), v);
     return coat_emission_weight(surface_clearcoat(m, scene, p), mu_o) * emission;
 }
