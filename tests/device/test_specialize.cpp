@@ -70,6 +70,10 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
     light_unlit_scene(lit_vase);
     expect_specialized_equals_generic(lit_vase, *vase.camera, "TransmissionTest (alpha mask)");
 
+    Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
+    car.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    expect_specialized_equals_generic(car, *car.camera, "ToyCar under a sky (clear coat, sheen)");
+
     Scene floor;
     test::add_quad(floor, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2},
                    test::add_material(floor, glm::vec3(0.5f), glm::vec3(0.0f), false));
