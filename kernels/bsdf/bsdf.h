@@ -79,6 +79,9 @@
  *    whole directional albedo: a white material under any coat reflects 1.
  *    That weight depends on wo alone (the albedo scaling of OpenPBR and of
  *    Cycles' Principled BSDF), so a coated material is not reciprocal.
+ *  A program whose scene has no sheen or no clear coat (WF_HAS_SHEEN,
+ *  WF_HAS_CLEARCOAT: compiled_features.h) leaves that lobe's code out; it
+ *  only ever ran for a factor above 0, so the bits are the same.
  *
  * The smooth limit: below alpha = WF_BSDF_DELTA_ALPHA (roughness 0.0316), or
  * for a transmissive material of ior exactly 1, the interface is a Dirac
