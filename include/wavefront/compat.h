@@ -32,13 +32,21 @@ typedef int int32_t;
  * a GPU's linker rejects (bench/gpu_isa.py links each program for AMD GPUs);
  * static fixes that, but made PoCL's renders 10-32% slower, its inliner then
  * leaving large functions as calls. WF_FORCE_INLINE serves the traversal's
- * inner loop, which PoCL's inliner otherwise leaves as calls. */
+ * inner loop, which PoCL's inliner otherwise leaves as calls. WF_GPU_INLINE
+ * serves the stages' large steps, which take the kernel's views (path state,
+ * scene, parameters) by pointer: a GPU's compiler left as a call keeps those
+ * views in scratch memory (up to 984 bytes a lane on gfx90a), so a GPU's
+ * program inlines them outright; PoCL's choice is left alone, since forcing
+ * them slowed the Cornell box's group schedule by 3%
+ * (bench/results/gpu-isa.md). */
 #ifdef WF_STATIC_FUNCTIONS
 #define WF_INLINE static inline
 #define WF_FORCE_INLINE static inline __attribute__((always_inline))
+#define WF_GPU_INLINE WF_FORCE_INLINE
 #else
 #define WF_INLINE inline
 #define WF_FORCE_INLINE inline __attribute__((always_inline))
+#define WF_GPU_INLINE WF_INLINE
 #endif
 /* OpenCL's prefetch() does nothing on PoCL; clang's builtin does, on a CPU,
  * where every address space is one. A GPU's compiler (NVIDIA's) refuses a
@@ -73,6 +81,7 @@ WF_INLINE uint lane_bits8(int8 m) { return lane_bits4(m.lo) | lane_bits4(m.hi) <
 #define WF_CONSTANT static const
 #define WF_INLINE inline
 #define WF_FORCE_INLINE inline
+#define WF_GPU_INLINE inline
 #define WF_PREFETCH(p) __builtin_prefetch(p)
 
 namespace wf_compat {

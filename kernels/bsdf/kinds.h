@@ -89,7 +89,7 @@ WF_INLINE BsdfAnswer general_core(const BsdfQuery* q) {
 #endif
 
 /* The core at width 1, by the material's kind. */
-WF_INLINE BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
+WF_GPU_INLINE BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
 #if WF_HAS_BSDF_OPAQUE && (WF_HAS_BSDF_GENERAL)
     return kind == WF_BSDF_OPAQUE ? opaque_core_x1(q) : general_core(q);
 #elif WF_HAS_BSDF_OPAQUE

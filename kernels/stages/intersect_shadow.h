@@ -16,7 +16,7 @@
 /* Traces the shadow segments of slot[0 .. count), count from 1 to
  * WF_TRACE_WIDTH, and adds the light of each that nothing blocks; next[i]
  * is the queue slot[i] goes to next. */
-WF_INLINE void trace_shadow_rays(PathState* path, const RenderParams* params, const uint* slot, uint count,
+WF_GPU_INLINE void trace_shadow_rays(PathState* path, const RenderParams* params, const uint* slot, uint count,
                                  const Scene* scene, const FilmBuffers* film, uint* next) {
     float3 origin[WF_TRACE_WIDTH], segment[WF_TRACE_WIDTH];
     RayHit hit[WF_TRACE_WIDTH];

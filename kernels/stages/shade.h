@@ -165,7 +165,7 @@ WF_INLINE bool shade_arrival(PathState* path, const RenderParams* params, uint s
  * then, unless the path ends here, the shading frame and the BSDF's
  * parameters: the BSDF core's query, but for its light sample (shade_light).
  * Returns whether the path needs the core. */
-WF_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+WF_GPU_INLINE bool shade_surface(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                              const FilmBuffers* film, const Arrival* a, ShadeContext* c) {
     SurfacePoint point;
     point.triangle = a->triangle;
@@ -299,7 +299,7 @@ WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint s
 
 /* The whole stage for one path: surface, light sample, the core at width 1,
  * scatter; returns the queue the path goes to next. */
-WF_INLINE uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
+WF_GPU_INLINE uint shade_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                        const FilmBuffers* film) {
     Arrival arrival;
     ShadeContext c;
