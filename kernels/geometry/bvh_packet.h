@@ -211,7 +211,7 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
                                        const Packet* p, uint32_t count, float t_max WF_HIT_FILTER_PARAM,
                                        RayHit* hit) {
     HitSelection selection[WF_PACKET_RAYS];
-    float window[WF_PACKET_RAYS];
+    float window[WF_PACKET_RAYS]; /* selection[i].window_end, side by side for the lanes' loads */
     for (int i = 0; i < WF_PACKET_RAYS; ++i) {
         selection[i] = no_hits(t_max);
         window[i] = t_max;
@@ -246,24 +246,11 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
             } else {
                 for (uint32_t m = lanes; m != 0u; m &= m - 1u) {
                     const uint32_t r = lowest_bit(m);
-                    const WatertightRay lane_ray = packet_lane_ray(p, r);
-                    const WatertightRay* ray = &lane_ray;
-                    for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
-                        WF_GLOBAL const TriangleBlock* b = triangles + block;
-                        const TriangleLanes four = block_lanes(ray, b);
-                        TriangleHit hits[WF_BLOCK_LANES];
-                        uint32_t found = intersect_triangles(ray, &four, lanes_in_range(block, first, end), t_max,
-                                                             window[r], hits);
-                        for (; found != 0u; found &= found - 1u) {
-                            const uint32_t lane = lowest_bit(found);
-                            const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
-                            if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
-                            select_hit(&selection[r], &hits[lane], index, b->light[lane] >= 0);
-                            window[r] = selection[r].window_end;
-                            found_any = 1;
-                        }
-                    }
+                    const WatertightRay ray = packet_lane_ray(p, r);
+                    leaf_hits(&ray, triangles, first, end, t_max, &selection[r], 0 WF_HIT_FILTER_ARG);
+                    window[r] = selection[r].window_end;
                 }
+                found_any = 1;
             }
             if (found_any) window_max = max_lane(vload8(0, window));
         } else {

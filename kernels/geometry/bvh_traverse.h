@@ -321,6 +321,31 @@ WF_FORCE_INLINE void prefetch_child(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL co
 
 WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u - bits)); }
 
+#if !WF_GPU_TRAVERSAL
+/* The leaf of BVH positions [first, end) against one ray, a block's four
+ * triangles at a time, each hit handed to select_hit; returns 1 at the first
+ * hit when stop_at_first_hit is set. */
+WF_FORCE_INLINE int leaf_hits(const WatertightRay* ray, WF_GLOBAL const TriangleBlock* triangles, uint32_t first,
+                              uint32_t end, float t_max, HitSelection* selection,
+                              int stop_at_first_hit WF_HIT_FILTER_PARAM) {
+    for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
+        WF_GLOBAL const TriangleBlock* b = triangles + block;
+        const TriangleLanes lanes = block_lanes(ray, b);
+        TriangleHit hits[WF_BLOCK_LANES];
+        uint32_t found = intersect_triangles(ray, &lanes, lanes_in_range(block, first, end), t_max,
+                                             selection->window_end, hits);
+        for (; found != 0u; found &= found - 1u) {
+            const uint32_t lane = lowest_bit(found);
+            const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
+            if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
+            select_hit(selection, &hits[lane], index, b->light[lane] >= 0);
+            if (stop_at_first_hit) return 1;
+        }
+    }
+    return 0;
+}
+#endif
+
 #if WF_GPU_TRAVERSAL
 /* child_entries one slot at a time, as a GPU's program tests the boxes: one
  * box's six planes live while it is tested, where eight boxes' forty-eight in
@@ -531,20 +556,8 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
         }
 #else
         /* One or two blocks, four triangles at a time. */
-        for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
-            WF_GLOBAL const TriangleBlock* b = triangles + block;
-            const TriangleLanes lanes = block_lanes(&t->ray, b);
-            TriangleHit hits[WF_BLOCK_LANES];
-            uint32_t found = intersect_triangles(&t->ray, &lanes, lanes_in_range(block, first, end), t->t_max,
-                                                 t->selection.window_end, hits);
-            for (; found != 0u; found &= found - 1u) {
-                const uint32_t lane = lowest_bit(found);
-                const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
-                if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
-                select_hit(&t->selection, &hits[lane], index, b->light[lane] >= 0);
-                if (stop_at_first_hit) return 1;
-            }
-        }
+        if (leaf_hits(&t->ray, triangles, first, end, t->t_max, &t->selection, stop_at_first_hit WF_HIT_FILTER_ARG))
+            return 1;
 #endif
     } else {
         WF_GLOBAL const BvhNode* node = nodes + child;
