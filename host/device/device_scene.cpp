@@ -1,7 +1,9 @@
 // device_scene.cpp — reorders the loaded triangles into BVH order and builds
 // the light table: each emissive triangle is weighted by its power,
 // π · area · mean(Le), doubled when it emits from both faces, less what a
-// clear coat over it reflects back (bsdf/coat_fresnel.h).
+// clear coat over it reflects back (bsdf/coat_fresnel.h); Le under an
+// emissive texture is the texture's mean over the triangle
+// (textured_emission.h), and a triangle whose texels are all black is no light.
 #include "device/device_scene.h"
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include "bsdf/coat_fresnel.h"
 #include "device/bsdf_kind_choice.h"
 #include "device/device_buffer.h"
+#include "device/textured_emission.h"
 #include "scene/environment_map.h"
 
 namespace wf {
@@ -22,11 +25,13 @@ void store3(float* out, const glm::vec3& v) {
     out[2] = v.z;
 }
 
-double triangle_power(const Scene& scene, uint32_t t) {
+double triangle_power(const Scene& scene, const TexturedEmission& textured, uint32_t t) {
     const SceneMaterial& m = scene.materials[scene.triangle_material[t]];
+    if (!m.emits()) return 0.0;
     const glm::dvec3 a(scene.positions[3 * t]), b(scene.positions[3 * t + 1]), c(scene.positions[3 * t + 2]);
     const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
-    const double radiance = (double(m.emission.x) + m.emission.y + m.emission.z) / 3.0;
+    const glm::dvec3 texture = textured.mean(t);
+    const double radiance = (m.emission.x * texture.x + m.emission.y * texture.y + m.emission.z * texture.z) / 3.0;
     return 3.14159265358979323846 * area * radiance * (m.double_sided ? 2.0 : 1.0) *
            wf_device::coat_emission_mean(m.clearcoat);
 }
@@ -74,6 +79,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     d.triangles.resize(n / WF_BLOCK_LANES);
     d.normals.resize(n);
     std::vector<double> light_weights;
+    const TexturedEmission textured(scene);
     const auto add_light = [&](uint32_t kind, uint32_t index, double power) {
         d.lights.push_back(LightEntry{0.0f, 0u, index, 0.0f, kind, {0u, 0u, 0u}});
         light_weights.push_back(power);
@@ -93,7 +99,7 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         store3(nrm.n0, scene.normals[3 * t]);
         store3(nrm.n1, scene.normals[3 * t + 1]);
         store3(nrm.n2, scene.normals[3 * t + 2]);
-        const double power = triangle_power(scene, t);
+        const double power = triangle_power(scene, textured, t);
         if (power > 0.0) {
             block.light[lane] = static_cast<int32_t>(d.lights.size());
             add_light(WF_LIGHT_TRIANGLE, static_cast<uint32_t>(i), power);

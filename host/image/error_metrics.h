@@ -7,6 +7,8 @@
 // mean and y by x, its only available value.
 #pragma once
 
+#include <cstddef>
+
 #include "image/image.h"
 
 namespace wf {

@@ -1,7 +1,7 @@
 // test_lights.cpp — every kind of light through the whole renderer, against
 // closed forms: an open floor lit by an environment (constant, and a map with
-// a sun and a gradient), by a point light, an emissive square and a
-// directional light, under
+// a sun and a gradient), by a point light, an emissive square (plain, and
+// under an emissive texture) and a directional light, under
 // each --light-sampling technique. The floor is Lambertian (specular 0) and
 // sees nothing but the light, so its radiance is albedo/π times its irradiance
 // exactly: a biased MIS weight, a pdf off by a Jacobian, or a light-choice
@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "bvh/bvh_builder.h"
 #include "scene/environment_map.h"
 #include "image/error_metrics.h"
 #include "render/renderer.h"
@@ -185,6 +188,26 @@ double square_irradiance(const glm::dvec3 corners[4], glm::dvec3 point, double r
     return radiance / 2.0 * std::fabs(sum);
 }
 
+// The floor under the square: each pixel's mean over a 4 x 4 grid of points
+// of its footprint, where the camera's rays meet the floor (as in the point
+// light's test).
+FilmReadout square_image(const FilmReadout& like, const glm::dvec3 corners[4], double radiance) {
+    FilmReadout expected = uniform_image(like, 0.0);
+    const double half = std::tan(0.25);
+    for (uint32_t j = 0; j < kSide; ++j)
+        for (uint32_t i = 0; i < kSide; ++i) {
+            double value = 0.0;
+            for (int sj = 0; sj < 4; ++sj)
+                for (int si = 0; si < 4; ++si) {
+                    const double x = half * (2.0 * (i + (si + 0.5) / 4) / kSide - 1.0);
+                    const double z = half * (2.0 * (j + (sj + 0.5) / 4) / kSide - 1.0);
+                    value += kAlbedo / kPi * square_irradiance(corners, {x, 0.0, z}, radiance) / 16.0;
+                }
+            for (int c = 0; c < 3; ++c) expected.mean.rgb[3 * (size_t{j} * kSide + i) + c] = float(value);
+        }
+    return expected;
+}
+
 TEST(Lights, EmissiveSquareGivesItsPolygonIrradianceUnderEveryTechnique) {
     const float radiance = 20.0f;
     const glm::vec3 corners[4] = {{0.15f, 0.5f, -0.15f}, {0.45f, 0.5f, -0.15f}, {0.45f, 0.5f, 0.15f},
@@ -196,24 +219,76 @@ TEST(Lights, EmissiveSquareGivesItsPolygonIrradianceUnderEveryTechnique) {
     for (int t = 0; t < 3; ++t) {
         const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
         EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
-        // Each pixel's mean over a 4 x 4 grid of points of its footprint,
-        // where the camera's rays meet the floor (as in the point light's test).
-        FilmReadout expected = uniform_image(out.film, 0.0);
-        const double half = std::tan(0.25);
-        for (uint32_t j = 0; j < kSide; ++j)
-            for (uint32_t i = 0; i < kSide; ++i) {
-                double value = 0.0;
-                for (int sj = 0; sj < 4; ++sj)
-                    for (int si = 0; si < 4; ++si) {
-                        const double x = half * (2.0 * (i + (si + 0.5) / 4) / kSide - 1.0);
-                        const double z = half * (2.0 * (j + (sj + 0.5) / 4) / kSide - 1.0);
-                        value += kAlbedo / kPi * square_irradiance(exact_corners, {x, 0.0, z}, radiance) / 16.0;
-                    }
-                for (int c = 0; c < 3; ++c) expected.mean.rgb[3 * (size_t{j} * kSide + i) + c] = float(value);
-            }
+        const FilmReadout expected = square_image(out.film, exact_corners, radiance);
         const double z = test::max_block_z(out.film, expected, 8);
         const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
         test::report_measured(std::string("emissive square, ") + kTechniqueNames[t] + ": mean " +
+                              std::to_string(mean) + " (closed form " + std::to_string(exact) +
+                              "), max block |z| " + std::to_string(z));
+        EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << kTechniqueNames[t];
+        EXPECT_NEAR(mean, exact, 2e-2 * exact) << kTechniqueNames[t];
+    }
+}
+
+// The same square, cut into 8 x 8 quads under an emissive texture of 8 x 8
+// texels, each quad on one texel (nearest filtering): white in the four
+// columns on the -x side, black in the rest. The light table leaves out the
+// triangles whose texels are all black and keeps every one on white, and the
+// floor sees the white half alone, as the closed form for that rectangle
+// says, under every technique: a triangle on white left out would darken
+// the NEE and MIS images, and BRDF sampling, which never reads the table,
+// checks the scene.
+TEST(Lights, TexturedEmitterIsChosenByItsTexelsUnderEveryTechnique) {
+    constexpr uint32_t kCells = 8;
+    const float radiance = 20.0f, x0 = 0.15f, z0 = -0.15f, side = 0.3f;
+    Scene scene = open_floor();
+    const uint32_t emitter = test::add_material(scene, glm::vec3(0.0f), glm::vec3(radiance), false);
+    for (uint32_t row = 0; row < kCells; ++row)
+        for (uint32_t col = 0; col < kCells; ++col) {
+            const float xa = x0 + side * col / kCells, xb = x0 + side * (col + 1) / kCells;
+            const float za = z0 + side * row / kCells, zb = z0 + side * (row + 1) / kCells;
+            test::add_quad(scene, {xa, 0.5f, za}, {xb, 0.5f, za}, {xb, 0.5f, zb}, {xa, 0.5f, zb}, emitter); // faces down
+        }
+    // u along +x, v along +z over the square; the floor's corners read (0, 0).
+    for (const glm::vec3& p : scene.positions)
+        scene.uv0.push_back(p.y > 0.0f ? glm::vec2((p.x - x0) / side, (p.z - z0) / side) : glm::vec2(0.0f));
+    scene.uv1 = scene.uv0;
+    scene.tangents.assign(scene.positions.size(), glm::vec4(1, 0, 0, 1));
+    DecodedImage half_white;
+    half_white.width = half_white.height = kCells;
+    half_white.channels = 3;
+    for (uint32_t y = 0; y < kCells; ++y)
+        for (uint32_t x = 0; x < kCells; ++x)
+            half_white.texels.push_back(x < kCells / 2 ? pack_rgba8(255, 255, 255, 255) : pack_rgba8(0, 0, 0, 255));
+    TextureInfo info{};
+    info.offset = scene.textures.add_texels(half_white, "test");
+    info.width = info.height = kCells;
+    info.flags = WF_TEXTURE_SRGB | WF_TEXTURE_NEAREST;
+    info.wrap_s = info.wrap_t = WF_WRAP_CLAMP_TO_EDGE;
+    info.channels = 3;
+    scene.materials[emitter].textures[WF_TEXTURE_EMISSIVE].texture = scene.textures.add_info(info, "half white");
+
+    // Which triangles are lights: the square's are 2 to 129, two a quad, row by row.
+    const Bvh bvh = build_bvh(scene.positions);
+    const DeviceSceneData data = make_device_scene_data(scene, bvh);
+    std::vector<bool> is_light(scene.triangle_count(), false);
+    for (const LightEntry& light : data.lights)
+        if (light.kind == WF_LIGHT_TRIANGLE) is_light[bvh.order[light.index]] = true;
+    for (uint32_t t = 2; t < scene.triangle_count(); ++t) {
+        const uint32_t col = (t - 2) / 2 % kCells;
+        if (col < kCells / 2) EXPECT_TRUE(is_light[t]) << "triangle " << t << " on white";
+        if (col >= kCells / 2 + 2) EXPECT_FALSE(is_light[t]) << "triangle " << t << " two texels clear of white";
+    }
+
+    const glm::dvec3 white[4] = {{x0, 0.5, z0}, {x0 + side / 2, 0.5, z0}, {x0 + side / 2, 0.5, z0 + side},
+                                 {x0, 0.5, z0 + side}};
+    for (int t = 0; t < 3; ++t) {
+        const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
+        EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
+        const FilmReadout expected = square_image(out.film, white, radiance);
+        const double z = test::max_block_z(out.film, expected, 8);
+        const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
+        test::report_measured(std::string("textured emitter, ") + kTechniqueNames[t] + ": mean " +
                               std::to_string(mean) + " (closed form " + std::to_string(exact) +
                               "), max block |z| " + std::to_string(z));
         EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << kTechniqueNames[t];
