@@ -10,7 +10,8 @@
  * work-item (the BVH traversal): float4 and
  * int4 lanes with their arithmetic, max and fabs, the relational
  * built-ins isless, isgreater, islessequal and isequal (-1 or 0 per lane),
- * select, vload4 and vstore4; float8 lanes minus or times a scalar, min, max,
+ * select, vload4 and vstore4; uint4 lanes (make_uint4) with their integer
+ * arithmetic, for a Sobol point's four coordinates; float8 lanes minus or times a scalar, min, max,
  * islessequal (int8), vload8 and vstore8; and lane_bits4/8, the one helper
  * OpenCL lacks: bit i set where lane i is true. On the device these are the
  * OpenCL built-ins; on the host they map onto GLM, <cmath> and <cstring>, and
@@ -59,6 +60,7 @@ typedef int int32_t;
 #define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
+#define make_uint4(x, y, z, w) ((uint4)((x), (y), (z), (w)))
 #define WF_DEVICE_BEGIN
 #define WF_DEVICE_END
 WF_INLINE float3 load_float3(WF_GLOBAL const float* p) { return vload3(0, p); }
@@ -130,6 +132,8 @@ inline uint32_t clz(uint32_t x) { return x == 0 ? 32u : static_cast<uint32_t>(__
 
 /* Four lanes: GLM's arithmetic, and the built-ins it lacks. */
 using int4 = glm::ivec4;
+using uint4 = glm::uvec4;
+inline uint4 make_uint4(uint32_t x, uint32_t y, uint32_t z, uint32_t w) { return uint4(x, y, z, w); }
 inline float4 max(float4 a, float4 b) { return float4(max(a.x, b.x), max(a.y, b.y), max(a.z, b.z), max(a.w, b.w)); }
 inline float4 fabs(float4 v) { return glm::abs(v); }
 inline int4 lanes_true(bool x, bool y, bool z, bool w) { return -int4(x, y, z, w); }

@@ -44,32 +44,30 @@
 
 WF_DEVICE_BEGIN
 
-/* sobol_matrices[32 d + j]: the column of dimension d's generator matrix for
- * bit j of the index, as a binary fraction (bit 31 is 1/2); that is m_{j+1}
+/* sobol_matrices[4 j + d]: the column of dimension d's generator matrix for
+ * bit j of the index (a bit's four columns side by side, so that one load
+ * takes them for all four coordinates), as a binary fraction (bit 31 is 1/2); that is m_{j+1}
  * of Joe and Kuo's recurrence shifted left by 31 - j. Polynomials (s, a) and
  * initial m: dimension 1: (1, 0), 1; dimension 2: (2, 1), 1 3; dimension 3:
  * (3, 1), 1 3 1. */
 WF_SOBOL_TABLE sobol_matrices[WF_SOBOL_DIMENSIONS * 32] = {
-    /* dimension 0: the identity, read as a fraction (bit reversal) */
-    0x80000000u, 0x40000000u, 0x20000000u, 0x10000000u, 0x08000000u, 0x04000000u, 0x02000000u, 0x01000000u,
-    0x00800000u, 0x00400000u, 0x00200000u, 0x00100000u, 0x00080000u, 0x00040000u, 0x00020000u, 0x00010000u,
-    0x00008000u, 0x00004000u, 0x00002000u, 0x00001000u, 0x00000800u, 0x00000400u, 0x00000200u, 0x00000100u,
-    0x00000080u, 0x00000040u, 0x00000020u, 0x00000010u, 0x00000008u, 0x00000004u, 0x00000002u, 0x00000001u,
-    /* dimension 1 */
-    0x80000000u, 0xc0000000u, 0xa0000000u, 0xf0000000u, 0x88000000u, 0xcc000000u, 0xaa000000u, 0xff000000u,
-    0x80800000u, 0xc0c00000u, 0xa0a00000u, 0xf0f00000u, 0x88880000u, 0xcccc0000u, 0xaaaa0000u, 0xffff0000u,
-    0x80008000u, 0xc000c000u, 0xa000a000u, 0xf000f000u, 0x88008800u, 0xcc00cc00u, 0xaa00aa00u, 0xff00ff00u,
-    0x80808080u, 0xc0c0c0c0u, 0xa0a0a0a0u, 0xf0f0f0f0u, 0x88888888u, 0xccccccccu, 0xaaaaaaaau, 0xffffffffu,
-    /* dimension 2 */
-    0x80000000u, 0xc0000000u, 0x60000000u, 0x90000000u, 0xe8000000u, 0x5c000000u, 0x8e000000u, 0xc5000000u,
-    0x68800000u, 0x9cc00000u, 0xee600000u, 0x55900000u, 0x80680000u, 0xc09c0000u, 0x60ee0000u, 0x90550000u,
-    0xe8808000u, 0x5cc0c000u, 0x8e606000u, 0xc5909000u, 0x6868e800u, 0x9c9c5c00u, 0xeeee8e00u, 0x5555c500u,
-    0x8000e880u, 0xc0005cc0u, 0x60008e60u, 0x9000c590u, 0xe8006868u, 0x5c009c9cu, 0x8e00eeeeu, 0xc5005555u,
-    /* dimension 3 */
-    0x80000000u, 0xc0000000u, 0x20000000u, 0x50000000u, 0xf8000000u, 0x74000000u, 0xa2000000u, 0x93000000u,
-    0xd8800000u, 0x25400000u, 0x59e00000u, 0xe6d00000u, 0x78080000u, 0xb40c0000u, 0x82020000u, 0xc3050000u,
-    0x208f8000u, 0x51474000u, 0xfbea2000u, 0x75d93000u, 0xa0858800u, 0x914e5400u, 0xdbe79e00u, 0x25db6d00u,
-    0x58800080u, 0xe54000c0u, 0x79e00020u, 0xb6d00050u, 0x800800f8u, 0xc00c0074u, 0x200200a2u, 0x50050093u,
+    /* bit j: dimensions 0 (the identity, read as a fraction: bit reversal), 1, 2, 3 */
+    0x80000000u, 0x80000000u, 0x80000000u, 0x80000000u, 0x40000000u, 0xc0000000u, 0xc0000000u, 0xc0000000u,
+    0x20000000u, 0xa0000000u, 0x60000000u, 0x20000000u, 0x10000000u, 0xf0000000u, 0x90000000u, 0x50000000u,
+    0x08000000u, 0x88000000u, 0xe8000000u, 0xf8000000u, 0x04000000u, 0xcc000000u, 0x5c000000u, 0x74000000u,
+    0x02000000u, 0xaa000000u, 0x8e000000u, 0xa2000000u, 0x01000000u, 0xff000000u, 0xc5000000u, 0x93000000u,
+    0x00800000u, 0x80800000u, 0x68800000u, 0xd8800000u, 0x00400000u, 0xc0c00000u, 0x9cc00000u, 0x25400000u,
+    0x00200000u, 0xa0a00000u, 0xee600000u, 0x59e00000u, 0x00100000u, 0xf0f00000u, 0x55900000u, 0xe6d00000u,
+    0x00080000u, 0x88880000u, 0x80680000u, 0x78080000u, 0x00040000u, 0xcccc0000u, 0xc09c0000u, 0xb40c0000u,
+    0x00020000u, 0xaaaa0000u, 0x60ee0000u, 0x82020000u, 0x00010000u, 0xffff0000u, 0x90550000u, 0xc3050000u,
+    0x00008000u, 0x80008000u, 0xe8808000u, 0x208f8000u, 0x00004000u, 0xc000c000u, 0x5cc0c000u, 0x51474000u,
+    0x00002000u, 0xa000a000u, 0x8e606000u, 0xfbea2000u, 0x00001000u, 0xf000f000u, 0xc5909000u, 0x75d93000u,
+    0x00000800u, 0x88008800u, 0x6868e800u, 0xa0858800u, 0x00000400u, 0xcc00cc00u, 0x9c9c5c00u, 0x914e5400u,
+    0x00000200u, 0xaa00aa00u, 0xeeee8e00u, 0xdbe79e00u, 0x00000100u, 0xff00ff00u, 0x5555c500u, 0x25db6d00u,
+    0x00000080u, 0x80808080u, 0x8000e880u, 0x58800080u, 0x00000040u, 0xc0c0c0c0u, 0xc0005cc0u, 0xe54000c0u,
+    0x00000020u, 0xa0a0a0a0u, 0x60008e60u, 0x79e00020u, 0x00000010u, 0xf0f0f0f0u, 0x9000c590u, 0xb6d00050u,
+    0x00000008u, 0x88888888u, 0xe8006868u, 0x800800f8u, 0x00000004u, 0xccccccccu, 0x5c009c9cu, 0xc00c0074u,
+    0x00000002u, 0xaaaaaaaau, 0x8e00eeeeu, 0x200200a2u, 0x00000001u, 0xffffffffu, 0xc5005555u, 0x50050093u,
 };
 
 /* Coordinate `dimension` (< WF_SOBOL_DIMENSIONS) of Sobol point `index`, as 32
@@ -78,9 +76,45 @@ WF_SOBOL_TABLE sobol_matrices[WF_SOBOL_DIMENSIONS * 32] = {
 WF_INLINE uint32_t sobol_bits(uint32_t index, uint32_t dimension) {
     uint32_t bits = 0u;
     for (uint32_t j = 0u; index != 0u; index >>= 1, ++j)
-        bits ^= sobol_matrices[dimension * 32u + j] & (0u - (index & 1u));
+        bits ^= sobol_matrices[4u * j + dimension] & (0u - (index & 1u));
     return bits;
 }
+
+/* The four coordinates' columns for bit j of the index. */
+WF_INLINE uint4 sobol_columns(uint32_t j) {
+#ifdef __OPENCL_C_VERSION__
+    return vload4(j, sobol_matrices);
+#else
+    return make_uint4(sobol_matrices[4u * j], sobol_matrices[4u * j + 1u], sobol_matrices[4u * j + 2u],
+                      sobol_matrices[4u * j + 3u]);
+#endif
+}
+
+/* sobol_bits of all four coordinates at once, a coordinate a lane. */
+#if defined(__OPENCL_C_VERSION__) && defined(__AVX__)
+/* On an x86 CPU device, sixteen columns a step (four bits of the index, four
+ * coordinates each) in one 512-bit vector: eight steps of independent
+ * arithmetic where a bit at a time was a loop of 32 dependent ones. */
+WF_INLINE uint4 sobol_point_bits(uint32_t index) {
+    const uint16 bit_in_step = (uint16)(0u, 0u, 0u, 0u, 1u, 1u, 1u, 1u, 2u, 2u, 2u, 2u, 3u, 3u, 3u, 3u);
+    uint16 bits = (uint16)(0u);
+    for (uint32_t step = 0u; step < 8u; ++step) {
+        const uint16 set = ((uint16)(index >> (4u * step)) >> bit_in_step) & (uint16)(1u);
+        bits ^= vload16(step, sobol_matrices) & ((uint16)(0u) - set);
+    }
+    const uint8 pairs = bits.lo ^ bits.hi;
+    return pairs.lo ^ pairs.hi;
+}
+#else
+WF_INLINE uint4 sobol_point_bits(uint32_t index) {
+    uint4 bits = make_uint4(0u, 0u, 0u, 0u);
+    for (uint32_t j = 0u; index != 0u; index >>= 1, ++j) {
+        const uint32_t mask = 0u - (index & 1u);
+        bits ^= sobol_columns(j) & make_uint4(mask, mask, mask, mask);
+    }
+    return bits;
+}
+#endif
 
 /* The top 24 bits scaled into [0, 1), as rng.h does: exact, never 1. */
 WF_INLINE float sobol_bits_to_float(uint32_t bits) { return (float)(bits >> 8) * (1.0f / 16777216.0f); }
@@ -90,63 +124,70 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
     return sobol_bits_to_float(sobol_bits(index, dimension));
 }
 
-/* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */
-WF_INLINE uint32_t sobol_reverse_bits(uint32_t x) {
-    x = (x >> 16) | (x << 16);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    return x;
-}
+/* The bit twiddling below is written once for a number and for four in
+ * lanes (uint4, a Sobol point's four coordinates): the same operations on
+ * each lane, so the same bits. WF_SOBOL_SCALAR(x) is x in every lane. */
+#define WF_SOBOL_FUNCTIONS(T, suffix, WF_SOBOL_SCALAR)                                                          \
+    /* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */                          \
+    WF_INLINE T sobol_reverse_bits##suffix(T x) {                                                             \
+        x = (x >> 16u) | (x << 16u);                                                                            \
+        x = ((x >> 8u) & WF_SOBOL_SCALAR(0x00ff00ffu)) | ((x & WF_SOBOL_SCALAR(0x00ff00ffu)) << 8u);            \
+        x = ((x >> 4u) & WF_SOBOL_SCALAR(0x0f0f0f0fu)) | ((x & WF_SOBOL_SCALAR(0x0f0f0f0fu)) << 4u);            \
+        x = ((x >> 2u) & WF_SOBOL_SCALAR(0x33333333u)) | ((x & WF_SOBOL_SCALAR(0x33333333u)) << 2u);            \
+        x = ((x >> 1u) & WF_SOBOL_SCALAR(0x55555555u)) | ((x & WF_SOBOL_SCALAR(0x55555555u)) << 1u);            \
+        return x;                                                                                             \
+    }                                                                                                         \
+    /* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants                              \
+     * from Wellons' hash-prospector search), for combining keys into seeds. */                               \
+    WF_INLINE T sobol_hash##suffix(T x) {                                                                     \
+        x ^= x >> 16u;                                                                                         \
+        x *= WF_SOBOL_SCALAR(0x7feb352du);                                                                    \
+        x ^= x >> 15u;                                                                                         \
+        x *= WF_SOBOL_SCALAR(0x846ca68bu);                                                                    \
+        x ^= x >> 16u;                                                                                         \
+        return x;                                                                                             \
+    }                                                                                                         \
+    /* Owen scrambling of bit-reversed x (Laine and Karras's observation): every                              \
+     * step below is a bijection in which bit k of the result is bit k of the input                           \
+     * XOR a function of the seed and the bits below k: adding, multiplying by an                             \
+     * odd number, and x ^= x * even all carry only upwards. Steps that mix the                               \
+     * input before and after the seed enters give every bit a dependence on all                              \
+     * the lower bits; measured pairwise flip correlations are at the noise level                             \
+     * of 20000 trials, unlike the original four-multiply form. */                                            \
+    WF_INLINE T sobol_owen_scramble_reversed##suffix(T x, T seed) {                                           \
+        x ^= x * WF_SOBOL_SCALAR(0x9e3779b8u);                                                                \
+        x += seed;                                                                                            \
+        x *= (seed >> 16u) | WF_SOBOL_SCALAR(1u);                                                              \
+        x ^= x * WF_SOBOL_SCALAR(0x6c50b47cu);                                                                \
+        x ^= x * WF_SOBOL_SCALAR(0xb82f1e52u);                                                                \
+        return x;                                                                                             \
+    }                                                                                                         \
+    /* Owen scrambling of x: each bit flipped by a hash of the seed and the bits                              \
+     * above it. */                                                                                           \
+    WF_INLINE T sobol_owen_scramble##suffix(T x, T seed) {                                                    \
+        return sobol_reverse_bits##suffix(sobol_owen_scramble_reversed##suffix(sobol_reverse_bits##suffix(x), seed)); \
+    }
 
-/* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants
- * from Wellons' hash-prospector search), for combining keys into seeds. */
-WF_INLINE uint32_t sobol_hash(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-/* Owen scrambling of bit-reversed x (Laine and Karras's observation): every
- * step below is a bijection in which bit k of the result is bit k of the input
- * XOR a function of the seed and the bits below k: adding, multiplying by an
- * odd number, and x ^= x * even all carry only upwards. Steps that mix the
- * input before and after the seed enters give every bit a dependence on all
- * the lower bits; measured pairwise flip correlations are at the noise level
- * of 20000 trials, unlike the original four-multiply form. */
-WF_INLINE uint32_t sobol_owen_scramble_reversed(uint32_t x, uint32_t seed) {
-    x ^= x * 0x9e3779b8u;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    return x;
-}
-
-/* Owen scrambling of x: each bit flipped by a hash of the seed and the bits
- * above it. */
-WF_INLINE uint32_t sobol_owen_scramble(uint32_t x, uint32_t seed) {
-    return sobol_reverse_bits(sobol_owen_scramble_reversed(sobol_reverse_bits(x), seed));
-}
-
-/* Coordinate `dimension` of Sobol point `index`, scrambled with a seed of its
- * own drawn from `key`, as a float in [0, 1). */
-WF_INLINE float sobol_scrambled_coordinate(uint32_t index, uint32_t dimension, uint32_t key) {
-    const uint32_t seed = sobol_hash(key ^ (0x9e3779b9u * (dimension + 1u)));
-    return sobol_bits_to_float(sobol_owen_scramble(sobol_bits(index, dimension), seed));
-}
+#define WF_SOBOL_ONE(x) (x)
+#define WF_SOBOL_FOUR(x) make_uint4((x), (x), (x), (x))
+WF_SOBOL_FUNCTIONS(uint32_t, , WF_SOBOL_ONE)
+WF_SOBOL_FUNCTIONS(uint4, 4, WF_SOBOL_FOUR)
+#undef WF_SOBOL_ONE
+#undef WF_SOBOL_FOUR
+#undef WF_SOBOL_FUNCTIONS
 
 /* Four numbers in [0, 1) for (pixel, sample, bounce, group): an Owen-scrambled
- * Sobol point, different for every (seed, pixel, bounce, group). */
+ * Sobol point, different for every (seed, pixel, bounce, group). The sample
+ * index is scrambled with the keys' hash; each coordinate of its point then
+ * with a seed of its own drawn from that hash, all four in lanes. */
 WF_INLINE float4 sobol_uniform4(uint32_t seed, uint32_t pixel, uint32_t sample, uint32_t bounce, uint32_t group) {
     const uint32_t key = sobol_hash(sobol_hash(sobol_hash(sobol_hash(seed) ^ pixel) ^ bounce) ^ group);
     const uint32_t index = sobol_owen_scramble(sample, key);
-    return make_float4(sobol_scrambled_coordinate(index, 0u, key), sobol_scrambled_coordinate(index, 1u, key),
-                       sobol_scrambled_coordinate(index, 2u, key), sobol_scrambled_coordinate(index, 3u, key));
+    const uint4 seeds = sobol_hash4(make_uint4(key, key, key, key) ^
+                                    make_uint4(0x9e3779b9u * 1u, 0x9e3779b9u * 2u, 0x9e3779b9u * 3u, 0x9e3779b9u * 4u));
+    const uint4 bits = sobol_owen_scramble4(sobol_point_bits(index), seeds);
+    return make_float4(sobol_bits_to_float(bits.x), sobol_bits_to_float(bits.y), sobol_bits_to_float(bits.z),
+                       sobol_bits_to_float(bits.w));
 }
 
 WF_DEVICE_END

@@ -2,7 +2,9 @@
 // compiled as host C++: its table against the Joe–Kuo recurrence, the
 // unscrambled sequence against its definition, the stratification the
 // scrambling must keep, the independence of keys, and the integration error
-// against independent random numbers.
+// against independent random numbers; then the point in lanes against the
+// coordinate-by-coordinate definition, and the CPU device's 512-bit form of
+// it against the host's, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +15,8 @@
 #include <vector>
 
 #include "common/sobol.h"
+#include "device/kernel_sources.h"
+#include "support/test_support.h"
 
 namespace {
 
@@ -86,7 +90,7 @@ TEST(Sobol, MatricesMatchJoeKuoRecurrence) {
     const auto reference = reference_matrices();
     for (unsigned d = 0; d < WF_SOBOL_DIMENSIONS; ++d)
         for (unsigned j = 0; j < 32; ++j)
-            EXPECT_EQ(wf_device::sobol_matrices[d * 32 + j], reference[d][j]) << "dimension " << d << ", bit " << j;
+            EXPECT_EQ(wf_device::sobol_matrices[4 * j + d], reference[d][j]) << "dimension " << d << ", bit " << j;
 }
 
 TEST(Sobol, UnscrambledSequenceIsSobols) {
@@ -193,6 +197,65 @@ TEST(Sobol, IntegratesFarBetterThanIndependentSamples) {
         independent_squared_error += independent_error * independent_error;
     }
     EXPECT_LT(sobol_squared_error, independent_squared_error / 10.0);
+}
+
+// sobol_uniform4 takes the four coordinates in lanes; each must be what its
+// definition gives alone: the point's bits for the scrambled index, each
+// Owen-scrambled with its coordinate's seed.
+TEST(Sobol, LanesGiveEachCoordinatesDefinition) {
+    std::mt19937 random(6);
+    for (int t = 0; t < 20000; ++t) {
+        const uint32_t seed = random(), pixel = random(), sample = random(), bounce = random() % 64, group = random() % 3;
+        const glm::vec4 p = sobol_uniform4(seed, pixel, sample, bounce, group);
+        const uint32_t key = wf_device::sobol_hash(
+            wf_device::sobol_hash(wf_device::sobol_hash(wf_device::sobol_hash(seed) ^ pixel) ^ bounce) ^ group);
+        const uint32_t index = wf_device::sobol_owen_scramble(sample, key);
+        for (uint32_t d = 0; d < WF_SOBOL_DIMENSIONS; ++d) {
+            const uint32_t coordinate_seed = wf_device::sobol_hash(key ^ (0x9e3779b9u * (d + 1u)));
+            const float expected = wf_device::sobol_bits_to_float(
+                wf_device::sobol_owen_scramble(wf_device::sobol_bits(index, d), coordinate_seed));
+            ASSERT_EQ(p[int(d)], expected) << "coordinate " << d;
+        }
+    }
+}
+
+const char* kSobolKernel = R"(
+__kernel void sobol_points(__global const uint* keys, __global float4* out, uint n) {
+    const uint i = get_global_id(0);
+    if (i >= n) return;
+    out[i] = sobol_uniform4(keys[5 * i], keys[5 * i + 1], keys[5 * i + 2], keys[5 * i + 3], keys[5 * i + 4]);
+}
+)";
+
+// The device computes the host's bits: on a CPU device through sixteen
+// columns at a time (sobol_point_bits), on the host a bit at a time.
+TEST(SobolDevice, HostAndPoclGiveTheSameBits) {
+    const size_t n = 4096;
+    std::mt19937 random(7);
+    std::vector<cl_uint> keys(5 * n);
+    for (size_t i = 0; i < n; ++i) {
+        keys[5 * i] = random();
+        keys[5 * i + 1] = random();
+        keys[5 * i + 2] = i < 64 ? cl_uint(i) : (i < 128 ? 0xffffffffu - cl_uint(i) : cl_uint(random()));
+        keys[5 * i + 3] = random() % 64;
+        keys[5 * i + 4] = random() % 3;
+    }
+    const wf::OpenClDevice& device = wf::test::cpu_device();
+    const cl::Program program = wf::test::build_test_program(wf::expand_kernel_source("common/sobol.h") + kSobolKernel);
+    cl::Buffer key_buffer(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, keys.size() * sizeof(cl_uint),
+                          keys.data());
+    cl::Buffer out(device.context, CL_MEM_WRITE_ONLY, n * sizeof(cl_float4));
+    cl::Kernel kernel(program, "sobol_points");
+    kernel.setArg(0, key_buffer);
+    kernel.setArg(1, out);
+    kernel.setArg(2, cl_uint(n));
+    device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(n), cl::NDRange(64));
+    std::vector<cl_float4> on_device(n);
+    device.queue.enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(cl_float4), on_device.data());
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec4 host = sobol_uniform4(keys[5 * i], keys[5 * i + 1], keys[5 * i + 2], keys[5 * i + 3], keys[5 * i + 4]);
+        for (int c = 0; c < 4; ++c) ASSERT_EQ(on_device[i].s[c], host[c]) << "point " << i << ", coordinate " << c;
+    }
 }
 
 } // namespace
