@@ -152,7 +152,8 @@ def render_ours(scene_path, out, width, spp, seed, integrator):
     stats = Path(out).with_suffix(".json")
     cmd = [str(REPO / "build" / "wavefront"), "render", str(scene_path), "--width", str(width), "--height",
            str(width), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator, "-o", str(out), "--quiet",
-           "--stats-json", str(stats), "--max-depth", "unlimited"]  # as Mitsuba's max_depth -1
+           "--stats-json", str(stats), "--max-depth", "unlimited",  # as Mitsuba's max_depth -1
+           "--sampler", "independent"]  # as Mitsuba's sampler above
     subprocess.run(cmd, check=True)
     return float(json.loads(stats.read_text())["times"]["render"])
 

@@ -53,37 +53,49 @@ def render(scene, flags, out, cache, extra=()):
         return (float(relmse) if relmse else None), seconds
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def study_arguments(doc):
+    """--size, --spp, --ref-spp and --rounds of an efficiency study."""
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--spp", type=int, default=64)
     parser.add_argument("--ref-spp", type=int, default=1024)
     parser.add_argument("--rounds", type=int, default=3)
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def efficiency_table(scenes, configs, args, what):
+    """Renders each scene's reference once (the default flags, another seed),
+    then every configuration, interleaved round by round; prints a Markdown
+    table of each one's median relMSE, seconds and efficiency relative to the
+    first configuration's. `what` names the configurations' column."""
     size = ["--width", str(args.size), "--height", str(args.size)]
     print(f"{args.size}x{args.size}, {args.spp} spp a render, references at {args.ref_spp} spp; "
           f"medians of {args.rounds} rounds\n")
-    print("| scene | rule | relMSE | seconds | efficiency / today's |")
+    print(f"| scene | {what} | relMSE | seconds | efficiency / the first's |")
     print("|---|---|--:|--:|--:|")
     with tempfile.TemporaryDirectory() as tmp:
         cache = os.path.join(tmp, "cache")
-        for name, scene in SCENES:
+        for name, scene in scenes:
             reference = os.path.join(tmp, "reference.exr")
             render(scene, size + ["--spp", str(args.ref_spp), "--seed", "1000"], reference, cache)
-            results = {label: [] for label, _ in CONFIGS}
-            for label, flags in CONFIGS:  # compile each program first
+            results = {label: [] for label, _ in configs}
+            for label, flags in configs:  # compile each program first
                 render(scene, size + ["--spp", "1"] + flags, os.path.join(tmp, "warm.exr"), cache)
             for r in range(args.rounds):
-                for label, flags in CONFIGS:
+                for label, flags in configs:
                     results[label].append(render(scene, size + ["--spp", str(args.spp), "--seed", str(r)] + flags,
                                                  os.path.join(tmp, "out.exr"), cache, ["--reference", reference]))
             base = None
-            for label, _ in CONFIGS:
+            for label, _ in configs:
                 relmse = statistics.median(e for e, _ in results[label])
                 seconds = statistics.median(s for _, s in results[label])
                 efficiency = 1.0 / (relmse * seconds)
                 base = base or efficiency
                 print(f"| {name} | {label} | {relmse:.4g} | {seconds:.2f} | {efficiency / base:.2f} |", flush=True)
+
+
+def main():
+    efficiency_table(SCENES, CONFIGS, study_arguments(__doc__), "rule")
 
 
 if __name__ == "__main__":

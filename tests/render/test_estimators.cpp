@@ -14,6 +14,7 @@
 // blocks (16384 samples) the largest |z| measured across all 12 techniques was
 // 2.9 in 576 comparisons.
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -108,6 +109,7 @@ TEST(Convergence, IndependentSamplingMseFallsAsOneOverSpp) {
         RenderSettings a, b;
         a.seed = 100 + 2 * pair;
         b.seed = 101 + 2 * pair;
+        a.sampler = b.sampler = WF_SAMPLER_INDEPENDENT;
         Renderer ra(test::cpu_device(), cornell(), *cornell().camera, ImageSize{kSide, kSide}, a);
         Renderer rb(test::cpu_device(), cornell(), *cornell().camera, ImageSize{kSide, kSide}, b);
         for (size_t i = 0; i < spp.size(); ++i) {
@@ -150,35 +152,47 @@ TEST(Convergence, SobolBeatsIndependentOnDirectLighting) {
 }
 
 // The relMSE estimated from the render's own variance, against the relMSE
-// measured against a reference, on two scenes: within a factor of 1.5 from
-// 64 spp on.
+// measured against a reference, on two scenes: with independent samples
+// within a factor of 1.5 from 64 spp on. Sobol points are stratified, which
+// s^2/n does not know, so for them the estimate is pessimistic (measured
+// 1.7-2.2x): above the true error, never below it, which is the side
+// --target-error needs.
 TEST(ErrorEstimate, TracksTheTrueError) {
-    for (uint32_t spp : {64u, 256u}) {
-        RenderSettings s;
-        s.spp = spp;
-        s.seed = 3;
-        const FilmReadout image = render_cornell(s);
-        const double measured = compare_images(image.mean, cornell_reference().mean).relmse;
-        const double estimated = estimate_relmse(image.mean, image.variance_of_mean);
-        EXPECT_GT(estimated / measured, 1.0 / 1.5) << "Cornell box at " << spp << " spp";
-        EXPECT_LT(estimated / measured, 1.5) << "Cornell box at " << spp << " spp";
-    }
-    // The furnace: every pixel's true value is known exactly.
+    struct Bounds {
+        uint32_t sampler;
+        double low, high;
+        const char* name;
+    };
     const Scene furnace = test::furnace_box(0.7f, 1.0f);
     SceneCamera inside;
     inside.position = {0.2f, 0.1f, -0.3f};
-    for (uint32_t spp : {64u, 256u}) {
-        RenderSettings s;
-        s.spp = spp;
-        Renderer r(test::cpu_device(), furnace, inside, ImageSize{kSide, kSide}, s);
-        r.render_to(spp);
-        const FilmReadout image = r.read();
-        const Image exact{kSide, kSide, std::vector<float>(3 * kSide * kSide, float(1.0 / (1.0 - 0.7)))};
-        const double measured = compare_images(image.mean, exact).relmse;
-        const double estimated = estimate_relmse(image.mean, image.variance_of_mean);
-        EXPECT_GT(estimated / measured, 1.0 / 1.5) << "furnace at " << spp << " spp";
-        EXPECT_LT(estimated / measured, 1.5) << "furnace at " << spp << " spp";
-    }
+    for (const Bounds& b : {Bounds{WF_SAMPLER_INDEPENDENT, 1.0 / 1.5, 1.5, "independent"},
+                            Bounds{WF_SAMPLER_SOBOL, 1.0, 3.0, "sobol"}})
+        for (uint32_t spp : {64u, 256u}) {
+            RenderSettings s;
+            s.spp = spp;
+            s.seed = 3;
+            s.sampler = b.sampler;
+            const FilmReadout image = render_cornell(s);
+            const double measured = compare_images(image.mean, cornell_reference().mean).relmse;
+            const double estimated = estimate_relmse(image.mean, image.variance_of_mean);
+            test::report_measured(std::string("error estimate / true, Cornell box, ") + b.name + ", " +
+                                  std::to_string(spp) + " spp: " + std::to_string(estimated / measured));
+            EXPECT_GT(estimated / measured, b.low) << "Cornell box, " << b.name << ", " << spp << " spp";
+            EXPECT_LT(estimated / measured, b.high) << "Cornell box, " << b.name << ", " << spp << " spp";
+
+            // The furnace: every pixel's true value is known exactly.
+            Renderer r(test::cpu_device(), furnace, inside, ImageSize{kSide, kSide}, s);
+            r.render_to(spp);
+            const FilmReadout lit = r.read();
+            const Image exact{kSide, kSide, std::vector<float>(3 * kSide * kSide, float(1.0 / (1.0 - 0.7)))};
+            const double furnace_measured = compare_images(lit.mean, exact).relmse;
+            const double furnace_estimated = estimate_relmse(lit.mean, lit.variance_of_mean);
+            test::report_measured(std::string("error estimate / true, furnace, ") + b.name + ", " +
+                                  std::to_string(spp) + " spp: " + std::to_string(furnace_estimated / furnace_measured));
+            EXPECT_GT(furnace_estimated / furnace_measured, b.low) << "furnace, " << b.name << ", " << spp << " spp";
+            EXPECT_LT(furnace_estimated / furnace_measured, b.high) << "furnace, " << b.name << ", " << spp << " spp";
+        }
 }
 
 } // namespace
