@@ -18,6 +18,11 @@ machine falls on both alike. Reported: samples/s of each, per round and the medi
 and the ratio. Mitsuba's path tracer starts Russian roulette at depth 5 (`rr_depth`),
 wavefront at 3, so Mitsuba traces somewhat longer paths for the same image.
 
+Efficiency at equal time: each round also renders ours with Sobol points (our
+default sampler) and Mitsuba with its `ldsampler`; every configuration's
+1 / (relMSE x seconds) is reported, relMSE estimated from its renders of rounds 1
+and 2 (seeds 1 and 2), which need no reference.
+
 Not part of CI or the test suite. Mitsuba 3 comes from PyPI, in a virtual environment
 outside the repository:
 
@@ -44,6 +49,8 @@ from pathlib import Path
 import numpy as np
 
 REPO = Path(__file__).resolve().parents[1]
+# (renderer, sampler) of the efficiency table; the time table compares the two independent ones.
+EFFICIENCY_CONFIGS = [("ours", "independent"), ("ours", "sobol"), ("Mitsuba", "independent"), ("Mitsuba", "ldsampler")]
 COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
 FORMATS = {5126: "f", 5125: "I", 5123: "H", 5121: "B"}
 
@@ -89,7 +96,7 @@ def lambertian_gltf(doc, path):
     path.write_text(json.dumps(doc))
 
 
-def mitsuba_scene(mi, doc, folder, width, height):
+def mitsuba_scene(mi, doc, folder, width, height, sampler="independent"):
     buffers = buffers_of(doc)
     scene = {"type": "scene", "integrator": {"type": "path", "max_depth": -1}}
     for k, mesh in enumerate(doc["meshes"]):
@@ -129,7 +136,7 @@ def mitsuba_scene(mi, doc, folder, width, height):
         "fov": math.degrees(camera["yfov"]),
         "to_world": mi.ScalarTransform4f().look_at(origin=origin.tolist(), target=(origin + forward).tolist(),
                                                    up=up.tolist()),
-        "sampler": {"type": "independent"},
+        "sampler": {"type": sampler},
         "film": {"type": "hdrfilm", "width": width, "height": height, "rfilter": {"type": "box"},
                  "pixel_format": "rgb"},
     }
@@ -140,6 +147,14 @@ def read_exr(mi, path):
     return np.array(mi.Bitmap(str(path)), dtype=np.float64)[:, :, :3]
 
 
+def relmse_of_two(a, b):
+    """The relMSE of either of two renders of the same image with independent
+    seeds, estimated without a reference: (a - b)^2 is twice a pixel's variance,
+    over the squared mean plus 0.01 (image/error_metrics.h's relMSE)."""
+    m = 0.5 * (a + b)
+    return float(np.mean((a - b) ** 2 / (m * m + 0.01)) / 2.0)
+
+
 def mean_and_error(a, b, block=16):
     """Mean of a and b over the image, and the standard error of their difference
     of means from the spread of block means."""
@@ -148,12 +163,12 @@ def mean_and_error(a, b, block=16):
     return a.mean(), b.mean(), da.std(ddof=1) / math.sqrt(da.size)
 
 
-def render_ours(scene_path, out, width, spp, seed, integrator):
+def render_ours(scene_path, out, width, spp, seed, integrator, sampler="independent"):
     stats = Path(out).with_suffix(".json")
     cmd = [str(REPO / "build" / "wavefront"), "render", str(scene_path), "--width", str(width), "--height",
            str(width), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator, "-o", str(out), "--quiet",
            "--stats-json", str(stats), "--max-depth", "unlimited",  # as Mitsuba's max_depth -1
-           "--sampler", "independent"]  # as Mitsuba's sampler above
+           "--sampler", sampler]
     subprocess.run(cmd, check=True)
     return float(json.loads(stats.read_text())["times"]["render"])
 
@@ -169,6 +184,8 @@ def main():
                     help="this renderer's integrator (the column named wavefront in the report)")
     ap.add_argument("--markdown")
     args = ap.parse_args()
+    if args.rounds < 2:
+        ap.error("--rounds must be at least 2: the efficiency table takes each configuration's relMSE from two renders")
 
     import mitsuba as mi
     mi.set_variant(args.variant)
@@ -180,23 +197,42 @@ def main():
         lambertian_gltf(doc, ours_scene)
         scene = mitsuba_scene(mi, doc, folder, args.width, args.width)
 
+        ld_scene = mitsuba_scene(mi, doc, folder, args.width, args.width, "ldsampler")
+
         start = time.perf_counter()
         np.array(mi.render(scene, spp=args.spp, seed=0))
         first = time.perf_counter() - start
+        np.array(mi.render(ld_scene, spp=args.spp, seed=0))
 
-        rows = []
+        # Each round: ours with either sampler, then Mitsuba with either; each
+        # configuration's images of rounds 1 and 2 (seeds 1 and 2) give its relMSE.
+        seconds = {c: [] for c in EFFICIENCY_CONFIGS}
+        images = {c: [] for c in EFFICIENCY_CONFIGS}
         for r in range(args.rounds):
-            seconds_ours = render_ours(ours_scene, folder / "ours.exr", args.width, args.spp, r + 1, args.integrator)
-            start = time.perf_counter()
-            image = np.array(mi.render(scene, spp=args.spp, seed=r + 1))
-            seconds_mitsuba = time.perf_counter() - start
-            rows.append((seconds_ours, seconds_mitsuba))
-        mi.Bitmap(image).write(str(folder / "mitsuba.exr"))
-        ours = read_exr(mi, folder / "ours.exr")
-        theirs = read_exr(mi, folder / "mitsuba.exr")
+            for config in EFFICIENCY_CONFIGS:
+                renderer, sampler = config
+                if renderer == "ours":
+                    out = folder / f"ours-{sampler}-{r}.exr"
+                    seconds[config].append(render_ours(ours_scene, out, args.width, args.spp, r + 1,
+                                                       args.integrator, sampler))
+                    images[config].append(read_exr(mi, out))
+                else:
+                    start = time.perf_counter()
+                    image = np.array(mi.render(scene if sampler == "independent" else ld_scene, spp=args.spp,
+                                               seed=r + 1))
+                    seconds[config].append(time.perf_counter() - start)
+                    images[config].append(np.asarray(image, dtype=np.float64)[:, :, :3])
+        rows = list(zip(seconds[("ours", "independent")], seconds[("Mitsuba", "independent")]))
+        ours = images[("ours", "independent")][-1]
+        theirs = images[("Mitsuba", "independent")][-1]
         m_ours, m_theirs, error = mean_and_error(ours, theirs)
         channels = ours.reshape(-1, 3).mean(axis=0) / theirs.reshape(-1, 3).mean(axis=0)
         left = ours[:, : args.width // 8].mean(axis=(0, 1)), theirs[:, : args.width // 8].mean(axis=(0, 1))
+        efficiency = {}
+        for config in EFFICIENCY_CONFIGS:
+            relmse = relmse_of_two(images[config][0], images[config][1])
+            median = statistics.median(seconds[config])
+            efficiency[config] = (median, relmse, 1.0 / (relmse * median))
 
     lines = [f"# wavefront against Mitsuba 3 ({mi.__version__}, `{args.variant}`) on {Path(args.scene).name}", "",
              f"`{' '.join(['bench/mitsuba_compare.py'] + [a for a in __import__('sys').argv[1:]])}`: "
@@ -219,6 +255,15 @@ def main():
     ma = statistics.median(a for a, _ in rows)
     mb = statistics.median(b for _, b in rows)
     lines.append(f"| median | {ma:.3f} | {samples / ma / 1e6:.3f} | {mb:.3f} | {samples / mb / 1e6:.3f} | {ma / mb:.2f} |")
+    base = efficiency[("Mitsuba", "independent")][2]
+    lines += ["", "## Efficiency at equal time", "",
+              "1 / (relMSE x seconds): seconds the median of the rounds, relMSE of one render estimated from the "
+              "two renders of rounds 1 and 2 (seeds 1 and 2), without a reference. Mitsuba's `ldsampler` is its "
+              "low-discrepancy sampler; ours `sobol` (the default), Owen-scrambled.", "",
+              "| renderer | sampler | seconds | relMSE | efficiency / Mitsuba independent |",
+              "|---|---|--:|--:|--:|"]
+    for (renderer, sampler), (median, relmse, e) in efficiency.items():
+        lines.append(f"| {renderer} | {sampler} | {median:.3f} | {relmse:.4g} | {e / base:.2f} |")
     text = "\n".join(lines) + "\n"
     print(text)
     if args.markdown:
