@@ -26,7 +26,9 @@
  * Owen scrambling flips each bit of a number by a random function of the
  * more significant bits, which maps elementary intervals onto elementary
  * intervals of the same shape and so keeps the net property exactly; the
- * "random function" is a hash, so the scramble costs a few multiplies. */
+ * "random function" is a hash, so the scramble costs a few multiplies. The
+ * point's four coordinates are computed side by side in uint4 lanes, and on
+ * a CPU device its matrix product sixteen columns at a time. */
 #ifndef WF_SOBOL_H
 #define WF_SOBOL_H
 
@@ -45,9 +47,9 @@
 WF_DEVICE_BEGIN
 
 /* sobol_matrices[4 j + d]: the column of dimension d's generator matrix for
- * bit j of the index (a bit's four columns side by side, so that one load
- * takes them for all four coordinates), as a binary fraction (bit 31 is 1/2); that is m_{j+1}
- * of Joe and Kuo's recurrence shifted left by 31 - j. Polynomials (s, a) and
+ * bit j of the index, as a binary fraction (bit 31 is 1/2); that is m_{j+1}
+ * of Joe and Kuo's recurrence shifted left by 31 - j. A bit's four columns
+ * sit side by side, so that one load takes them for the four coordinates. Polynomials (s, a) and
  * initial m: dimension 1: (1, 0), 1; dimension 2: (2, 1), 1 3; dimension 3:
  * (3, 1), 1 3 1. */
 WF_SOBOL_TABLE sobol_matrices[WF_SOBOL_DIMENSIONS * 32] = {
@@ -127,44 +129,44 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
 /* The bit twiddling below is written once for a number and for four in
  * lanes (uint4, a Sobol point's four coordinates): the same operations on
  * each lane, so the same bits. WF_SOBOL_SCALAR(x) is x in every lane. */
-#define WF_SOBOL_FUNCTIONS(T, suffix, WF_SOBOL_SCALAR)                                                          \
-    /* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */                          \
-    WF_INLINE T sobol_reverse_bits##suffix(T x) {                                                             \
-        x = (x >> 16u) | (x << 16u);                                                                            \
-        x = ((x >> 8u) & WF_SOBOL_SCALAR(0x00ff00ffu)) | ((x & WF_SOBOL_SCALAR(0x00ff00ffu)) << 8u);            \
-        x = ((x >> 4u) & WF_SOBOL_SCALAR(0x0f0f0f0fu)) | ((x & WF_SOBOL_SCALAR(0x0f0f0f0fu)) << 4u);            \
-        x = ((x >> 2u) & WF_SOBOL_SCALAR(0x33333333u)) | ((x & WF_SOBOL_SCALAR(0x33333333u)) << 2u);            \
-        x = ((x >> 1u) & WF_SOBOL_SCALAR(0x55555555u)) | ((x & WF_SOBOL_SCALAR(0x55555555u)) << 1u);            \
-        return x;                                                                                             \
-    }                                                                                                         \
-    /* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants                              \
-     * from Wellons' hash-prospector search), for combining keys into seeds. */                               \
-    WF_INLINE T sobol_hash##suffix(T x) {                                                                     \
-        x ^= x >> 16u;                                                                                         \
-        x *= WF_SOBOL_SCALAR(0x7feb352du);                                                                    \
-        x ^= x >> 15u;                                                                                         \
-        x *= WF_SOBOL_SCALAR(0x846ca68bu);                                                                    \
-        x ^= x >> 16u;                                                                                         \
-        return x;                                                                                             \
-    }                                                                                                         \
-    /* Owen scrambling of bit-reversed x (Laine and Karras's observation): every                              \
-     * step below is a bijection in which bit k of the result is bit k of the input                           \
-     * XOR a function of the seed and the bits below k: adding, multiplying by an                             \
-     * odd number, and x ^= x * even all carry only upwards. Steps that mix the                               \
-     * input before and after the seed enters give every bit a dependence on all                              \
-     * the lower bits; measured pairwise flip correlations are at the noise level                             \
-     * of 20000 trials, unlike the original four-multiply form. */                                            \
-    WF_INLINE T sobol_owen_scramble_reversed##suffix(T x, T seed) {                                           \
-        x ^= x * WF_SOBOL_SCALAR(0x9e3779b8u);                                                                \
-        x += seed;                                                                                            \
-        x *= (seed >> 16u) | WF_SOBOL_SCALAR(1u);                                                              \
-        x ^= x * WF_SOBOL_SCALAR(0x6c50b47cu);                                                                \
-        x ^= x * WF_SOBOL_SCALAR(0xb82f1e52u);                                                                \
-        return x;                                                                                             \
-    }                                                                                                         \
-    /* Owen scrambling of x: each bit flipped by a hash of the seed and the bits                              \
-     * above it. */                                                                                           \
-    WF_INLINE T sobol_owen_scramble##suffix(T x, T seed) {                                                    \
+#define WF_SOBOL_FUNCTIONS(T, suffix, WF_SOBOL_SCALAR)                                                               \
+    /* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */                                 \
+    WF_INLINE T sobol_reverse_bits##suffix(T x) {                                                                    \
+        x = (x >> 16u) | (x << 16u);                                                                                 \
+        x = ((x >> 8u) & WF_SOBOL_SCALAR(0x00ff00ffu)) | ((x & WF_SOBOL_SCALAR(0x00ff00ffu)) << 8u);                 \
+        x = ((x >> 4u) & WF_SOBOL_SCALAR(0x0f0f0f0fu)) | ((x & WF_SOBOL_SCALAR(0x0f0f0f0fu)) << 4u);                 \
+        x = ((x >> 2u) & WF_SOBOL_SCALAR(0x33333333u)) | ((x & WF_SOBOL_SCALAR(0x33333333u)) << 2u);                 \
+        x = ((x >> 1u) & WF_SOBOL_SCALAR(0x55555555u)) | ((x & WF_SOBOL_SCALAR(0x55555555u)) << 1u);                 \
+        return x;                                                                                                    \
+    }                                                                                                                \
+    /* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants                                     \
+     * from Wellons' hash-prospector search), for combining keys into seeds. */                                      \
+    WF_INLINE T sobol_hash##suffix(T x) {                                                                            \
+        x ^= x >> 16u;                                                                                               \
+        x *= WF_SOBOL_SCALAR(0x7feb352du);                                                                           \
+        x ^= x >> 15u;                                                                                               \
+        x *= WF_SOBOL_SCALAR(0x846ca68bu);                                                                           \
+        x ^= x >> 16u;                                                                                               \
+        return x;                                                                                                    \
+    }                                                                                                                \
+    /* Owen scrambling of bit-reversed x (Laine and Karras's observation): every                                     \
+     * step below is a bijection in which bit k of the result is bit k of the input                                  \
+     * XOR a function of the seed and the bits below k: adding, multiplying by an                                    \
+     * odd number, and x ^= x * even all carry only upwards. Steps that mix the                                      \
+     * input before and after the seed enters give every bit a dependence on all                                     \
+     * the lower bits; measured pairwise flip correlations are at the noise level                                    \
+     * of 20000 trials, unlike the original four-multiply form. */                                                   \
+    WF_INLINE T sobol_owen_scramble_reversed##suffix(T x, T seed) {                                                  \
+        x ^= x * WF_SOBOL_SCALAR(0x9e3779b8u);                                                                       \
+        x += seed;                                                                                                   \
+        x *= (seed >> 16u) | WF_SOBOL_SCALAR(1u);                                                                    \
+        x ^= x * WF_SOBOL_SCALAR(0x6c50b47cu);                                                                       \
+        x ^= x * WF_SOBOL_SCALAR(0xb82f1e52u);                                                                       \
+        return x;                                                                                                    \
+    }                                                                                                                \
+    /* Owen scrambling of x: each bit flipped by a hash of the seed and the bits                                     \
+     * above it. */                                                                                                  \
+    WF_INLINE T sobol_owen_scramble##suffix(T x, T seed) {                                                           \
         return sobol_reverse_bits##suffix(sobol_owen_scramble_reversed##suffix(sobol_reverse_bits##suffix(x), seed)); \
     }
 
