@@ -28,26 +28,32 @@ glm::dvec3 texel_rgb(const TextureInfo& info, const std::vector<uint32_t>& texel
 // read, as disjoint runs in increasing order: the bilinear filter reads
 // floor(x - 0.5) and the texel after it, NEAREST floor(x); `margin` texels
 // more on each side cover the kernels' rounding of x.
-std::vector<Run> axis_runs(double lo, double hi, double margin, uint32_t wrap, uint32_t size) {
+std::vector<Run> axis_runs(double lo, double hi, double margin, uint32_t wrap_mode, uint32_t size) {
     const double first = std::floor(lo - 0.5 - margin), last = std::floor(hi + 0.5 + margin);
     const double n = size;
-    if (wrap == WF_WRAP_CLAMP_TO_EDGE) // clamping is monotone: the range's ends clamped
+    if (wrap_mode == WF_WRAP_CLAMP_TO_EDGE) // clamping is monotone: the range's ends clamped
         return {{uint32_t(std::clamp(first, 0.0, n - 1.0)), uint32_t(std::clamp(last, 0.0, n - 1.0))}};
     if (!(last - first + 1.0 < 2.0 * n)) return {{0u, size - 1u}}; // a whole period of the wrap, or more
-    std::vector<uint32_t> indices;
-    const double period = 2.0 * n; // of REPEAT's wrap too, being twice its own
-    for (double i = first; i <= last; ++i) {
-        const double in_period = i - period * std::floor(i / period); // [0, 2 size), which the wrap takes
-        indices.push_back(wf_device::texture_wrap_index(int32_t(in_period), wrap, size));
-    }
-    std::sort(indices.begin(), indices.end());
+    // Between multiples of size the wrap is monotone (REPEAT rises, MIRRORED_REPEAT
+    // rises and falls in turn), so each of the range's (at most three) pieces
+    // reads the texels between its ends' wrapped indices.
+    const auto wrap = [&](double i) {
+        const double period = 2.0 * n; // of REPEAT's wrap too, being twice its own
+        return wf_device::texture_wrap_index(int32_t(i - period * std::floor(i / period)), wrap_mode, size);
+    };
     std::vector<Run> runs;
-    for (const uint32_t i : indices)
-        if (!runs.empty() && i <= runs.back().second + 1u)
-            runs.back().second = std::max(runs.back().second, i);
+    for (double piece = std::floor(first / n) * n; piece <= last; piece += n) {
+        const uint32_t a = wrap(std::max(first, piece)), b = wrap(std::min(last, piece + n - 1.0));
+        runs.push_back({std::min(a, b), std::max(a, b)});
+    }
+    std::sort(runs.begin(), runs.end());
+    std::vector<Run> merged;
+    for (const Run& r : runs)
+        if (!merged.empty() && r.first <= merged.back().second + 1u)
+            merged.back().second = std::max(merged.back().second, r.second);
         else
-            runs.push_back({i, i});
-    return runs;
+            merged.push_back(r);
+    return merged;
 }
 
 uint32_t texels_in(const std::vector<Run>& runs) {
