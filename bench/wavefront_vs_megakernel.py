@@ -9,7 +9,7 @@ kernels are compiled by a 1-spp render first (bench/throughput.py's render).
 Prints a Markdown table: the rates of each round, and each schedule's median
 ratio to the megakernel.
 
-Usage: python3 bench/wavefront_vs_megakernel.py [--rounds N] [--width N]
+Usage: python3 bench/wavefront_vs_megakernel.py [--rounds N] [--width N] [--sampler S]
        (from any directory; about 8 minutes on 2 cores at the defaults)
 """
 
@@ -38,7 +38,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--width", type=int, default=512)
+    parser.add_argument("--sampler", help="every configuration's --sampler (default: the renderer's, sobol)")
     args = parser.parse_args()
+    sampler = ["--sampler", args.sampler] if args.sampler else []
     print(f"| scene | {' | '.join(label for label, _ in CONFIGS)} | "
           f"{' | '.join(label + ' / megakernel' for label, _ in CONFIGS[:-1])} |")
     print("|---|" + "--:|" * (2 * len(CONFIGS) - 1))
@@ -48,7 +50,7 @@ def main():
             for _ in range(args.rounds):
                 for label, flags in CONFIGS:
                     s = render(scene, ["--width", str(args.width), "--height", str(args.width), "--spp", str(spp)]
-                               + flags, cache)
+                               + sampler + flags, cache)
                     rates[label].append(s["samples"] / s["times"]["render"] * 1e-6)
             mega = statistics.median(rates["megakernel"])
             cells = [", ".join(f"{r:.2f}" for r in rates[label]) for label, _ in CONFIGS]
