@@ -96,7 +96,9 @@ struct RenderSettings {
     uint32_t max_depth = kDefaultMaxDepth; // WF_UNLIMITED_DEPTH: ended by roulette alone
     uint32_t seed = 0;
     uint32_t pool_size = 0; // 0: chosen from the image and the device (render/device_renderer.h)
-    uint32_t roulette_depth = 3; // first bounce count at which roulette may end a path
+    // The first bounce count at which roulette may end a path; 5, chosen by
+    // efficiency with Sobol points (bench/results/roulette-study.md).
+    uint32_t roulette_depth = 5;
     float roulette_cap = 1.0f;   // the largest survival probability (kernels/stages/roulette.h)
     uint32_t local_size = 64; // at least WF_PATH_LENGTH_BUCKETS: accumulate counts with one work-item per bucket
     uint32_t light_sampling = WF_LIGHT_SAMPLING_MIS;
