@@ -208,6 +208,24 @@ FilmReadout square_image(const FilmReadout& like, const glm::dvec3 corners[4], d
     return expected;
 }
 
+// The scene rendered with each technique (BRDF sampling at 1024 spp, the
+// others at 64, one bounce) against square_image of `corners`, block by block
+// and in the mean.
+void expect_square_under_every_technique(const Scene& scene, const glm::dvec3 corners[4], double radiance,
+                                         const std::string& what) {
+    for (int t = 0; t < 3; ++t) {
+        const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
+        EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
+        const FilmReadout expected = square_image(out.film, corners, radiance);
+        const double z = test::max_block_z(out.film, expected, 8);
+        const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
+        test::report_measured(what + ", " + kTechniqueNames[t] + ": mean " + std::to_string(mean) +
+                              " (closed form " + std::to_string(exact) + "), max block |z| " + std::to_string(z));
+        EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << what << ", " << kTechniqueNames[t];
+        EXPECT_NEAR(mean, exact, 2e-2 * exact) << what << ", " << kTechniqueNames[t];
+    }
+}
+
 TEST(Lights, EmissiveSquareGivesItsPolygonIrradianceUnderEveryTechnique) {
     const float radiance = 20.0f;
     const glm::vec3 corners[4] = {{0.15f, 0.5f, -0.15f}, {0.45f, 0.5f, -0.15f}, {0.45f, 0.5f, 0.15f},
@@ -216,18 +234,7 @@ TEST(Lights, EmissiveSquareGivesItsPolygonIrradianceUnderEveryTechnique) {
     test::add_quad(scene, corners[0], corners[1], corners[2], corners[3],
                    test::add_material(scene, glm::vec3(0.0f), glm::vec3(radiance), false));
     const glm::dvec3 exact_corners[4] = {corners[0], corners[1], corners[2], corners[3]};
-    for (int t = 0; t < 3; ++t) {
-        const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
-        EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
-        const FilmReadout expected = square_image(out.film, exact_corners, radiance);
-        const double z = test::max_block_z(out.film, expected, 8);
-        const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
-        test::report_measured(std::string("emissive square, ") + kTechniqueNames[t] + ": mean " +
-                              std::to_string(mean) + " (closed form " + std::to_string(exact) +
-                              "), max block |z| " + std::to_string(z));
-        EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << kTechniqueNames[t];
-        EXPECT_NEAR(mean, exact, 2e-2 * exact) << kTechniqueNames[t];
-    }
+    expect_square_under_every_technique(scene, exact_corners, radiance, "emissive square");
 }
 
 // The same square, cut into 8 x 8 quads under an emissive texture of 8 x 8
@@ -282,18 +289,7 @@ TEST(Lights, TexturedEmitterIsChosenByItsTexelsUnderEveryTechnique) {
 
     const glm::dvec3 white[4] = {{x0, 0.5, z0}, {x0 + side / 2, 0.5, z0}, {x0 + side / 2, 0.5, z0 + side},
                                  {x0, 0.5, z0 + side}};
-    for (int t = 0; t < 3; ++t) {
-        const RenderOutput out = render(scene, kTechniques[t], t == 0 ? 1024 : 64, 1);
-        EXPECT_EQ(out.summary.stats.nonfinite_samples, 0u);
-        const FilmReadout expected = square_image(out.film, white, radiance);
-        const double z = test::max_block_z(out.film, expected, 8);
-        const double mean = test::image_mean(out.film, 1).mean, exact = test::image_mean(expected, 1).mean;
-        test::report_measured(std::string("textured emitter, ") + kTechniqueNames[t] + ": mean " +
-                              std::to_string(mean) + " (closed form " + std::to_string(exact) +
-                              "), max block |z| " + std::to_string(z));
-        EXPECT_LT(z, test::bonferroni_threshold(0.01, 3 * 16 * 3)) << kTechniqueNames[t];
-        EXPECT_NEAR(mean, exact, 2e-2 * exact) << kTechniqueNames[t];
-    }
+    expect_square_under_every_technique(scene, white, radiance, "textured emitter");
 }
 
 // A directional light of illuminance E at 60° from the zenith: E cos 60° on
