@@ -30,10 +30,10 @@ SCENES = [  # name, path from the repository root
     ("MetalRoughSpheresNoTextures", REAL + "MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf"),
 ]
 CONFIGS = [  # label, flags; today's rule first
-    ("depth 3, q = max throughput (today)", ["--roulette-depth", "3", "--roulette-cap", "1"]),
-    ("depth 3, q <= 0.95", ["--roulette-depth", "3", "--roulette-cap", "0.95"]),
-    ("depth 5, q = max throughput", ["--roulette-depth", "5", "--roulette-cap", "1"]),
+    ("depth 5, q = max throughput (today)", ["--roulette-depth", "5", "--roulette-cap", "1"]),
     ("depth 5, q <= 0.95 (Mitsuba 3)", ["--roulette-depth", "5", "--roulette-cap", "0.95"]),
+    ("depth 3, q = max throughput", ["--roulette-depth", "3", "--roulette-cap", "1"]),
+    ("depth 3, q <= 0.95", ["--roulette-depth", "3", "--roulette-cap", "0.95"]),
     ("depth 1, q <= 0.95", ["--roulette-depth", "1", "--roulette-cap", "0.95"]),
 ]
 
