@@ -77,25 +77,24 @@ std::vector<Run> block_runs(const std::vector<Run>& runs) {
 
 } // namespace
 
-TexturedEmission::TexturedEmission(const Scene& scene) : scene_(scene), block_sums_(scene.textures.infos.size()) {
-    for (const SceneMaterial& m : scene.materials) {
-        const int32_t texture = m.textures[WF_TEXTURE_EMISSIVE].texture;
-        if (!m.emits() || texture < 0 || !block_sums_[size_t(texture)].table.empty()) continue;
-        const TextureInfo& info = scene.textures.infos[size_t(texture)];
-        BlockSums& sums = block_sums_[size_t(texture)];
-        sums.blocks_x = (info.width + kBlock - 1u) / kBlock;
-        sums.blocks_y = (info.height + kBlock - 1u) / kBlock;
-        const size_t stride = sums.blocks_x + 1u;
-        sums.table.assign(stride * (sums.blocks_y + 1u), glm::dvec3(0.0));
-        for (uint32_t y = 0; y < info.height; ++y)
-            for (uint32_t x = 0; x < info.width; ++x)
-                sums.table[(y / kBlock + 1u) * stride + x / kBlock + 1u] += texel_rgb(info, scene.textures.texels, x, y);
-        for (size_t by = 1; by <= sums.blocks_y; ++by)
-            for (size_t bx = 1; bx <= sums.blocks_x; ++bx)
-                sums.table[by * stride + bx] += sums.table[(by - 1) * stride + bx] +
-                                                sums.table[by * stride + bx - 1] -
-                                                sums.table[(by - 1) * stride + bx - 1];
-    }
+TexturedEmission::TexturedEmission(const Scene& scene) : scene_(scene), block_sums_(scene.textures.infos.size()) {}
+
+const TexturedEmission::BlockSums& TexturedEmission::block_sums(int32_t texture) const {
+    BlockSums& sums = block_sums_[size_t(texture)];
+    if (!sums.table.empty()) return sums;
+    const TextureInfo& info = scene_.textures.infos[size_t(texture)];
+    sums.blocks_x = (info.width + kBlock - 1u) / kBlock;
+    sums.blocks_y = (info.height + kBlock - 1u) / kBlock;
+    const size_t stride = sums.blocks_x + 1u;
+    sums.table.assign(stride * (sums.blocks_y + 1u), glm::dvec3(0.0));
+    for (uint32_t y = 0; y < info.height; ++y)
+        for (uint32_t x = 0; x < info.width; ++x)
+            sums.table[(y / kBlock + 1u) * stride + x / kBlock + 1u] += texel_rgb(info, scene_.textures.texels, x, y);
+    for (size_t by = 1; by <= sums.blocks_y; ++by)
+        for (size_t bx = 1; bx <= sums.blocks_x; ++bx)
+            sums.table[by * stride + bx] += sums.table[(by - 1) * stride + bx] + sums.table[by * stride + bx - 1] -
+                                            sums.table[(by - 1) * stride + bx - 1];
+    return sums;
 }
 
 glm::dvec3 TexturedEmission::mean(uint32_t t) const {
@@ -137,7 +136,7 @@ glm::dvec3 TexturedEmission::mean(uint32_t t) const {
                         ++count;
                     }
     } else {
-        const BlockSums& sums = block_sums_[size_t(ref.texture)];
+        const BlockSums& sums = block_sums(ref.texture);
         const size_t stride = sums.blocks_x + 1u;
         for (const Run& by : block_runs(ys))
             for (const Run& bx : block_runs(xs)) {

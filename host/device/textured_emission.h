@@ -12,7 +12,8 @@
 // Its mean is summed texel by texel where the box is small, and from sums
 // over 8×8 blocks of texels where it is large (the blocks that cover it, so
 // the mean is an estimate there; a zero is still exact, since no texel is
-// negative).
+// negative); a texture's block sums are made the first time a footprint
+// needs them, not for every emissive texture at start-up.
 #pragma once
 
 #include <cstdint>
@@ -42,8 +43,11 @@ private:
         std::vector<glm::dvec3> table;
     };
 
+    // Texture `texture`'s, summed the first time a large footprint needs them.
+    const BlockSums& block_sums(int32_t texture) const;
+
     const Scene& scene_;
-    std::vector<BlockSums> block_sums_; // per TextureInfo; empty for those no emitter uses
+    mutable std::vector<BlockSums> block_sums_; // per TextureInfo; empty until needed
 };
 
 } // namespace wf
