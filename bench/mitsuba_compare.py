@@ -15,8 +15,9 @@ Timing: `--rounds` rounds, each rendering once with wavefront (the closing repor
 Mitsuba (the wall time of mi.render, its result read back, after one untimed render
 that JIT-compiles and caches its kernels), one after the other, so that a load on the
 machine falls on both alike. Reported: samples/s of each, per round and the median,
-and the ratio. Mitsuba's path tracer starts Russian roulette at depth 5 (`rr_depth`),
-wavefront at 3, so Mitsuba traces somewhat longer paths for the same image.
+and the ratio. Both path tracers start Russian roulette at depth 5 (Mitsuba's
+`rr_depth`, wavefront's default --roulette-depth), Mitsuba capping survival at 0.95,
+so both trace paths of about the same length for the same image.
 
 Efficiency at equal time: each round also renders ours with Sobol points (our
 default sampler) and Mitsuba with its `ldsampler`; every configuration's

@@ -166,32 +166,27 @@ TEST(ErrorEstimate, TracksTheTrueError) {
     const Scene furnace = test::furnace_box(0.7f, 1.0f);
     SceneCamera inside;
     inside.position = {0.2f, 0.1f, -0.3f};
+    const Image exact_furnace{kSide, kSide, std::vector<float>(3 * kSide * kSide, float(1.0 / (1.0 - 0.7)))};
     for (const Bounds& b : {Bounds{WF_SAMPLER_INDEPENDENT, 1.0 / 1.5, 1.5, "independent"},
                             Bounds{WF_SAMPLER_SOBOL, 1.0, 3.0, "sobol"}})
         for (uint32_t spp : {64u, 256u}) {
+            const auto expect_tracks = [&](const FilmReadout& image, const Image& truth, const std::string& scene) {
+                const double ratio = estimate_relmse(image.mean, image.variance_of_mean) /
+                                     compare_images(image.mean, truth).relmse;
+                const std::string what = scene + ", " + b.name + ", " + std::to_string(spp) + " spp";
+                test::report_measured("error estimate / true, " + what + ": " + std::to_string(ratio));
+                EXPECT_GT(ratio, b.low) << what;
+                EXPECT_LT(ratio, b.high) << what;
+            };
             RenderSettings s;
             s.spp = spp;
             s.seed = 3;
             s.sampler = b.sampler;
-            const FilmReadout image = render_cornell(s);
-            const double measured = compare_images(image.mean, cornell_reference().mean).relmse;
-            const double estimated = estimate_relmse(image.mean, image.variance_of_mean);
-            test::report_measured(std::string("error estimate / true, Cornell box, ") + b.name + ", " +
-                                  std::to_string(spp) + " spp: " + std::to_string(estimated / measured));
-            EXPECT_GT(estimated / measured, b.low) << "Cornell box, " << b.name << ", " << spp << " spp";
-            EXPECT_LT(estimated / measured, b.high) << "Cornell box, " << b.name << ", " << spp << " spp";
-
+            expect_tracks(render_cornell(s), cornell_reference().mean, "Cornell box");
             // The furnace: every pixel's true value is known exactly.
             Renderer r(test::cpu_device(), furnace, inside, ImageSize{kSide, kSide}, s);
             r.render_to(spp);
-            const FilmReadout lit = r.read();
-            const Image exact{kSide, kSide, std::vector<float>(3 * kSide * kSide, float(1.0 / (1.0 - 0.7)))};
-            const double furnace_measured = compare_images(lit.mean, exact).relmse;
-            const double furnace_estimated = estimate_relmse(lit.mean, lit.variance_of_mean);
-            test::report_measured(std::string("error estimate / true, furnace, ") + b.name + ", " +
-                                  std::to_string(spp) + " spp: " + std::to_string(furnace_estimated / furnace_measured));
-            EXPECT_GT(furnace_estimated / furnace_measured, b.low) << "furnace, " << b.name << ", " << spp << " spp";
-            EXPECT_LT(furnace_estimated / furnace_measured, b.high) << "furnace, " << b.name << ", " << spp << " spp";
+            expect_tracks(r.read(), exact_furnace, "furnace");
         }
 }
 
