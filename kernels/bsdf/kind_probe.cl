@@ -23,8 +23,8 @@ WF_INLINE BsdfQuery probe_query(__global const float* in, uint n, uint i, uint h
     q.params.specular = IN(5);
     q.params.specular_color = (float3)(IN(6), IN(7), IN(8));
     q.params.thin_walled = 0u;
-    q.params.clearcoat = 0.0f;
-    q.params.clearcoat_roughness = 0.0f;
+    q.params.clearcoat = IN(19);
+    q.params.clearcoat_roughness = IN(20);
     q.params.sheen_color = (float3)(0.0f);
     q.params.sheen_roughness = 0.0f;
     q.params.hemisphere = hemisphere;
@@ -53,6 +53,14 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
     store_answer(out + 12 * i, opaque_core_x1(&q));
 }
 
+#if WF_HAS_CLEARCOAT
+#define PROBE_COAT(W)                                  \
+    p.clearcoat = vload##W(i, in + 19 * n);            \
+    p.clearcoat_roughness = vload##W(i, in + 20 * n);
+#else
+#define PROBE_COAT(W)
+#endif
+
 /* WF_W items a work-item, from the same arrays. */
 #define LANE_PROBE(W)                                                                                         \
     __kernel void opaque_probe_x##W(__global const float* in, uint n, uint hemisphere, __global float* out) { \
@@ -68,6 +76,7 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
         p.specular_color.g = vload##W(i, in + 7 * n);                                                         \
         p.specular_color.b = vload##W(i, in + 8 * n);                                                         \
         p.ior = vload##W(i, in + 9 * n);                                                                      \
+        PROBE_COAT(W)                                                                                         \
         lvec##W wo, wi, u, sampled;                                                                           \
         wo.x = vload##W(i, in + 10 * n), wo.y = vload##W(i, in + 11 * n), wo.z = vload##W(i, in + 12 * n);    \
         wi.x = vload##W(i, in + 13 * n), wi.y = vload##W(i, in + 14 * n), wi.z = vload##W(i, in + 15 * n);    \

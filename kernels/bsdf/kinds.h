@@ -53,6 +53,10 @@ WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     p.specular = b->specular;
     p.specular_color = rgb_from_float3(b->specular_color);
     p.ior = b->ior;
+#if WF_HAS_CLEARCOAT
+    p.clearcoat = b->clearcoat;
+    p.clearcoat_roughness = b->clearcoat_roughness;
+#endif
     return p;
 }
 

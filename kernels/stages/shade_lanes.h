@@ -25,19 +25,20 @@
 #if WF_HAS_BSDF_OPAQUE && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
 #define WF_GROUP_LANES 1
 
-/* Emissive triangles the only lights, and none textured, coated (the
- * general kind) or alpha-masked: lights/light_lanes.inc samples them in lanes. */
+/* Emissive triangles the only lights, and none textured, coated (a clear
+ * coat or the general kind's sheen weighs the emission beneath) or
+ * alpha-masked: lights/light_lanes.inc samples them in lanes. */
 #define WF_LIGHTS_IN_LANES                                                                          \
     (WF_HAS_EMISSIVE_TRIANGLES && !WF_HAS_PUNCTUAL_LIGHTS && !WF_HAS_ENVIRONMENT && !WF_HAS_TEXTURES && \
-     !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL)
+     !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
 
 /* No textures, normal maps, vertex colours or first-hit AOVs, and every
- * material of the opaque kind: a hit's surface is its triangle's corners and
- * normals and its material's factors, and the lanes find it too
- * (stages/surface.inc). */
+ * material of the opaque kind without a coat: a hit's surface is its
+ * triangle's corners and normals and its material's factors, and the lanes
+ * find it too (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_BSDF_GENERAL)
+     !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
@@ -56,7 +57,8 @@
  * r, g, b) in turn; masks and the light's segment end are held as floats. */
 enum LaneField {
     WF_LANE_BASE, WF_LANE_METALLIC = WF_LANE_BASE + 3, WF_LANE_ROUGHNESS, WF_LANE_SPECULAR, WF_LANE_SPECULAR_COLOR,
-    WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_WO, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
+    WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_CLEARCOAT, /* and its roughness: fields where the scene has a coat */
+    WF_LANE_WO = WF_LANE_CLEARCOAT + 2 * WF_HAS_CLEARCOAT, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
     WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
     WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
     WF_LANE_FRAME_Y = WF_LANE_FRAME_X + 3, WF_LANE_FRAME_Z = WF_LANE_FRAME_Y + 3,
@@ -111,6 +113,10 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     WF_LANE_AT(soa, WF_LANE_SPECULAR, at) = q->params.specular;
     lanes_put3(soa, WF_LANE_SPECULAR_COLOR, at, q->params.specular_color);
     WF_LANE_AT(soa, WF_LANE_IOR, at) = q->params.ior;
+#if WF_HAS_CLEARCOAT
+    WF_LANE_AT(soa, WF_LANE_CLEARCOAT, at) = q->params.clearcoat;
+    WF_LANE_AT(soa, WF_LANE_CLEARCOAT + 1, at) = q->params.clearcoat_roughness;
+#endif
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
     lanes_put3(soa, WF_LANE_U, at, q->u);
     lanes_put3(soa, WF_LANE_POSITION, at, c->position);
@@ -319,6 +325,10 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     p.specular = WF_LANE_LOAD(WF_LANE_SPECULAR, first);
     p.specular_color = WF_LANE_LOAD_RGB(WF_LANE_SPECULAR_COLOR, first);
     p.ior = WF_LANE_LOAD(WF_LANE_IOR, first);
+#if WF_HAS_CLEARCOAT
+    p.clearcoat = WF_LANE_LOAD(WF_LANE_CLEARCOAT, first);
+    p.clearcoat_roughness = WF_LANE_LOAD(WF_LANE_CLEARCOAT + 1, first);
+#endif
     wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
     s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);

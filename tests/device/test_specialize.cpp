@@ -53,7 +53,7 @@ TEST(Specialize, FeaturesAreWhatTheSceneUses) {
               "environment, clear coat, sheen");
     const Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
     EXPECT_EQ(describe_features(scene_features(car)),
-              "general BSDF, textures, normal maps, emissive triangles, clear coat, sheen");
+              "general BSDF, opaque BSDF, textures, normal maps, emissive triangles, clear coat, sheen");
 }
 
 TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {

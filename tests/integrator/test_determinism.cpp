@@ -61,20 +61,36 @@ TEST(Determinism, RoundsDoNotChangeOneBit) {
 // width-1 bits, and a pixel's samples are still added in order by its one
 // slot: the bytes are the same, on a scene that uses every kind of work
 // (glossy and glass bounces, shadow rays, roulette; opaque and general BSDF
-// kinds) and with a pool smaller than the image, so slots own several pixels.
-class ScheduleDeterminism : public ::testing::TestWithParam<const char*> {};
+// kinds, with and without a clear coat) and with a pool smaller than the
+// image, so slots own several pixels.
+struct DeterminismScene {
+    const char* file;
+    bool coated; // every opaque material under a clear coat, rough or smooth in turn
+};
+
+class ScheduleDeterminism : public ::testing::TestWithParam<DeterminismScene> {};
 
 TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
-    const std::string scene = std::string(WF_SOURCE_DIR "/scenes/") + GetParam();
+    Scene scene = load_gltf(std::string(WF_SOURCE_DIR "/scenes/") + GetParam().file);
+    if (GetParam().coated)
+        for (size_t i = 0; i < scene.materials.size(); ++i)
+            if (!(scene.materials[i].transmission > 0.0f)) {
+                scene.materials[i].clearcoat = i % 2 ? 0.5f : 1.0f;
+                scene.materials[i].clearcoat_roughness = i % 2 ? 0.0f : 0.3f;
+            }
+    auto render = [&](RenderSettings s) {
+        s.spp = 4;
+        return render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, s);
+    };
     RenderSettings settings;
     settings.seed = 5;
     settings.pool_size = 500;
     settings.schedule = Schedule::Refill;
-    const RenderOutput reference = render_file(scene, settings);
+    const RenderOutput reference = render(settings);
     EXPECT_GT(reference.summary.stats.shadow_rays, 0u);
     for (const Schedule schedule : {Schedule::Passes, Schedule::Fullest, Schedule::Group}) {
         settings.schedule = schedule;
-        const RenderOutput r = render_file(scene, settings);
+        const RenderOutput r = render(settings);
         EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << schedule_name(schedule);
         EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << schedule_name(schedule);
         EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
@@ -82,11 +98,11 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     }
     settings.schedule = Schedule::Group; // its work-groups are its queues: another local size, the same bytes
     settings.local_size = 128;
-    EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean)) << "group, local size 128";
+    EXPECT_TRUE(same_bytes(reference.film.mean, render(settings).film.mean)) << "group, local size 128";
     settings.local_size = RenderSettings{}.local_size;
     for (const uint32_t width : {1u, 8u, 16u}) { // its BSDF lanes (kernels/stages/shade_lanes.h), none to sixteen
         settings.lane_width = width;
-        EXPECT_TRUE(same_bytes(reference.film.mean, render_file(scene, settings).film.mean))
+        EXPECT_TRUE(same_bytes(reference.film.mean, render(settings).film.mean))
             << "group, lane width " << width;
     }
     settings.lane_width = RenderSettings{}.lane_width;
@@ -94,16 +110,16 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     // and hash the independent sampler's themselves (kernels/stages/shade_lanes.h):
     // both ways, the same bytes.
     settings.sampler = WF_SAMPLER_INDEPENDENT;
-    const RenderOutput independent = render_file(scene, settings);
+    const RenderOutput independent = render(settings);
     settings.schedule = Schedule::Refill;
-    EXPECT_TRUE(same_bytes(render_file(scene, settings).film.mean, independent.film.mean))
+    EXPECT_TRUE(same_bytes(render(settings).film.mean, independent.film.mean))
         << "group, independent sampler";
     settings.sampler = RenderSettings{}.sampler;
     settings.schedule = Schedule::Group;
     settings.trace_width = 2; // two rays a work-item (kernels/geometry/trace_width.h); these scenes' default is 1
     for (const Schedule schedule : {Schedule::Refill, Schedule::Group}) {
         settings.schedule = schedule;
-        const RenderOutput r = render_file(scene, settings);
+        const RenderOutput r = render(settings);
         EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << "trace width 2, " << schedule_name(schedule);
         EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
     }
@@ -111,13 +127,13 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
         settings.queue_push = push;
-        const RenderOutput r = render_file(scene, settings);
+        const RenderOutput r = render(settings);
         EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << queue_push_name(push);
         EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
     }
     settings.queue_push = QueuePush::Group;
     settings.integrator = Integrator::Megakernel;
-    const RenderOutput mega = render_file(scene, settings);
+    const RenderOutput mega = render(settings);
     EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));
     EXPECT_EQ(mega.summary.stats.samples, reference.summary.stats.samples);
     EXPECT_EQ(mega.summary.stats.closest_rays, reference.summary.stats.closest_rays);
@@ -126,7 +142,17 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ScheduleDeterminism,
-                         ::testing::Values("cornell-box.gltf", "cornell-teapot.gltf", "cornell-glass.gltf"));
+                         ::testing::Values(DeterminismScene{"cornell-box.gltf", false},
+                                           DeterminismScene{"cornell-teapot.gltf", false},
+                                           DeterminismScene{"cornell-glass.gltf", false},
+                                           DeterminismScene{"cornell-glass.gltf", true}),
+                         [](const ::testing::TestParamInfo<DeterminismScene>& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(0, name.find('.'));
+                             for (char& c : name)
+                                 if (c == '-') c = '_';
+                             return info.param.coated ? name + "_coated" : name;
+                         });
 
 // With no schedule asked for, the renderer picks the device's: group on a
 // CPU (its stages keep a work-group's paths in one core's caches), refill on

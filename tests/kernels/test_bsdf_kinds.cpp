@@ -1,7 +1,8 @@
 // test_bsdf_kinds.cpp — the BSDF kinds (kernels/bsdf/kinds.h) against the
 // general BSDF (bsdf/bsdf.h), their oracle, on the device:
 //  1. for random opaque materials (metal and dielectric, rough and smooth,
-//     coloured specular, either hemisphere sampler) and random wo, wi, u, the
+//     coloured specular, under no clear coat or a rough or smooth one, either
+//     hemisphere sampler) and random wo, wi, u, the
 //     opaque kind at width 1 gives the general BSDF's f and pdf at wi and its
 //     sample (direction, f, pdf, Dirac or not) to within float rounding;
 //  2. at widths 8 and 16 it gives width 1's answers to the bit, so the group
@@ -26,7 +27,7 @@ namespace {
 // The inputs, a structure of arrays: each field's n values in turn
 // (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
-             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, FIELD_COUNT };
+             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, CLEARCOAT, CLEARCOAT_ROUGHNESS, FIELD_COUNT };
 // The answers per item: f at wi (3), its pdf, the sample's wi (3), f (3), pdf, delta.
 constexpr int kAnswer = 12;
 
@@ -53,6 +54,9 @@ Items random_items(size_t n, uint32_t seed) {
         set(SPECULAR, i, sort == 4 ? 0.0f : sort == 5 ? u01(rng) : 1.0f);
         set(SPEC_R, i, sort == 5 ? 2.0f * u01(rng) : 1.0f), set(SPEC_G, i, 1.0f), set(SPEC_B, i, 1.0f);
         set(IOR, i, sort == 5 ? 1.0f + 2.0f * u01(rng) : 1.5f);
+        const int coat = int(i / 6 % 4); // none; rough; a Dirac mirror at full weight; roughness 1
+        set(CLEARCOAT, i, coat == 0 ? 0.0f : coat == 2 ? 1.0f : u01(rng));
+        set(CLEARCOAT_ROUGHNESS, i, coat == 2 ? 0.01f : coat == 3 ? 1.0f : u01(rng));
         for (int d = 0; d < 2; ++d) {
             float v[3] = {normal(rng), normal(rng), normal(rng)};
             const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
