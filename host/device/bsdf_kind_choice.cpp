@@ -10,7 +10,7 @@ bool has_sheen(const SceneMaterial& m) {
 }
 
 uint32_t bsdf_kind_of(const SceneMaterial& m) {
-    if (m.transmission > 0.0f || has_sheen(m)) return WF_BSDF_GENERAL;
+    if (m.transmission > 0.0f) return WF_BSDF_GENERAL;
     return WF_BSDF_OPAQUE;
 }
 

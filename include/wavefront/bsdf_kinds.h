@@ -11,8 +11,8 @@
 #define WF_BSDF_KINDS(X)                                                                                     \
     X(GENERAL, "general", "every lobe of bsdf/bsdf.h behind branches: transmission, clear coat, sheen")      \
     X(OPAQUE, "opaque",                                                                                      \
-      "a diffuse base under a GGX dielectric or metal interface, and a clear coat over them where the "      \
-      "material has one (bsdf/kinds/opaque.inc)")
+      "a diffuse base under a GGX dielectric or metal interface, and a sheen and a clear coat over them "    \
+      "where the material has them (bsdf/kinds/opaque.inc)")
 
 #define WF_BSDF_KIND_ENUM(kind, name, what) WF_BSDF_##kind,
 enum BsdfKind { WF_BSDF_KINDS(WF_BSDF_KIND_ENUM) WF_BSDF_KIND_COUNT };

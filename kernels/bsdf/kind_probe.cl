@@ -25,8 +25,8 @@ WF_INLINE BsdfQuery probe_query(__global const float* in, uint n, uint i, uint h
     q.params.thin_walled = 0u;
     q.params.clearcoat = IN(19);
     q.params.clearcoat_roughness = IN(20);
-    q.params.sheen_color = (float3)(0.0f);
-    q.params.sheen_roughness = 0.0f;
+    q.params.sheen_color = (float3)(IN(21), IN(22), IN(23));
+    q.params.sheen_roughness = IN(24);
     q.params.hemisphere = hemisphere;
     q.wo = (float3)(IN(10), IN(11), IN(12));
     q.wi_light = (float3)(IN(13), IN(14), IN(15));
@@ -60,6 +60,15 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
 #else
 #define PROBE_COAT(W)
 #endif
+#if WF_HAS_SHEEN
+#define PROBE_SHEEN(W)                                 \
+    p.sheen_color.r = vload##W(i, in + 21 * n);        \
+    p.sheen_color.g = vload##W(i, in + 22 * n);        \
+    p.sheen_color.b = vload##W(i, in + 23 * n);        \
+    p.sheen_roughness = vload##W(i, in + 24 * n);
+#else
+#define PROBE_SHEEN(W)
+#endif
 
 /* WF_W items a work-item, from the same arrays. */
 #define LANE_PROBE(W)                                                                                         \
@@ -77,6 +86,7 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
         p.specular_color.b = vload##W(i, in + 8 * n);                                                         \
         p.ior = vload##W(i, in + 9 * n);                                                                      \
         PROBE_COAT(W)                                                                                         \
+        PROBE_SHEEN(W)                                                                                        \
         lvec##W wo, wi, u, sampled;                                                                           \
         wo.x = vload##W(i, in + 10 * n), wo.y = vload##W(i, in + 11 * n), wo.z = vload##W(i, in + 12 * n);    \
         wi.x = vload##W(i, in + 13 * n), wi.y = vload##W(i, in + 14 * n), wi.z = vload##W(i, in + 15 * n);    \

@@ -57,6 +57,10 @@ WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     p.clearcoat = b->clearcoat;
     p.clearcoat_roughness = b->clearcoat_roughness;
 #endif
+#if WF_HAS_SHEEN
+    p.sheen_color = rgb_from_float3(b->sheen_color);
+    p.sheen_roughness = b->sheen_roughness;
+#endif
     return p;
 }
 

@@ -33,12 +33,12 @@
      !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
 
 /* No textures, normal maps, vertex colours or first-hit AOVs, and every
- * material of the opaque kind without a coat: a hit's surface is its
- * triangle's corners and normals and its material's factors, and the lanes
- * find it too (stages/surface.inc). */
+ * material of the opaque kind without a coat or sheen: a hit's surface is
+ * its triangle's corners and normals and its material's factors, and the
+ * lanes find it too (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
+     !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
@@ -58,7 +58,8 @@
 enum LaneField {
     WF_LANE_BASE, WF_LANE_METALLIC = WF_LANE_BASE + 3, WF_LANE_ROUGHNESS, WF_LANE_SPECULAR, WF_LANE_SPECULAR_COLOR,
     WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_CLEARCOAT, /* and its roughness: fields where the scene has a coat */
-    WF_LANE_WO = WF_LANE_CLEARCOAT + 2 * WF_HAS_CLEARCOAT, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
+    WF_LANE_SHEEN = WF_LANE_CLEARCOAT + 2 * WF_HAS_CLEARCOAT, /* colour and roughness, where it has a sheen */
+    WF_LANE_WO = WF_LANE_SHEEN + 4 * WF_HAS_SHEEN, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
     WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
     WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
     WF_LANE_FRAME_Y = WF_LANE_FRAME_X + 3, WF_LANE_FRAME_Z = WF_LANE_FRAME_Y + 3,
@@ -116,6 +117,10 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
 #if WF_HAS_CLEARCOAT
     WF_LANE_AT(soa, WF_LANE_CLEARCOAT, at) = q->params.clearcoat;
     WF_LANE_AT(soa, WF_LANE_CLEARCOAT + 1, at) = q->params.clearcoat_roughness;
+#endif
+#if WF_HAS_SHEEN
+    lanes_put3(soa, WF_LANE_SHEEN, at, q->params.sheen_color);
+    WF_LANE_AT(soa, WF_LANE_SHEEN + 3, at) = q->params.sheen_roughness;
 #endif
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
     lanes_put3(soa, WF_LANE_U, at, q->u);
@@ -328,6 +333,10 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
 #if WF_HAS_CLEARCOAT
     p.clearcoat = WF_LANE_LOAD(WF_LANE_CLEARCOAT, first);
     p.clearcoat_roughness = WF_LANE_LOAD(WF_LANE_CLEARCOAT + 1, first);
+#endif
+#if WF_HAS_SHEEN
+    p.sheen_color = WF_LANE_LOAD_RGB(WF_LANE_SHEEN, first);
+    p.sheen_roughness = WF_LANE_LOAD(WF_LANE_SHEEN + 3, first);
 #endif
     wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);

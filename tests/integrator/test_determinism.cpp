@@ -61,23 +61,25 @@ TEST(Determinism, RoundsDoNotChangeOneBit) {
 // width-1 bits, and a pixel's samples are still added in order by its one
 // slot: the bytes are the same, on a scene that uses every kind of work
 // (glossy and glass bounces, shadow rays, roulette; opaque and general BSDF
-// kinds, with and without a clear coat) and with a pool smaller than the
-// image, so slots own several pixels.
+// kinds, with and without a clear coat or sheen) and with a pool smaller
+// than the image, so slots own several pixels.
 struct DeterminismScene {
     const char* file;
-    bool coated; // every opaque material under a clear coat, rough or smooth in turn
+    bool layered; // every opaque material under a rough coat, a smooth coat and a sheen, or a sheen, in turn
 };
 
 class ScheduleDeterminism : public ::testing::TestWithParam<DeterminismScene> {};
 
 TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     Scene scene = load_gltf(std::string(WF_SOURCE_DIR "/scenes/") + GetParam().file);
-    if (GetParam().coated)
-        for (size_t i = 0; i < scene.materials.size(); ++i)
-            if (!(scene.materials[i].transmission > 0.0f)) {
-                scene.materials[i].clearcoat = i % 2 ? 0.5f : 1.0f;
-                scene.materials[i].clearcoat_roughness = i % 2 ? 0.0f : 0.3f;
-            }
+    if (GetParam().layered)
+        for (size_t i = 0; i < scene.materials.size(); ++i) {
+            SceneMaterial& m = scene.materials[i];
+            if (m.transmission > 0.0f) continue;
+            m.clearcoat = i % 3 == 0 ? 1.0f : i % 3 == 1 ? 0.5f : 0.0f;
+            m.clearcoat_roughness = i % 3 == 0 ? 0.3f : 0.0f;
+            if (i % 3 != 0) m.sheen_color = glm::vec3(0.8f, 0.2f, 0.1f), m.sheen_roughness = 0.4f;
+        }
     auto render = [&](RenderSettings s) {
         s.spp = 4;
         return render_scene(test::cpu_device(), scene, *scene.camera, ImageSize{40, 30}, s);
@@ -151,7 +153,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ScheduleDeterminism,
                              name = name.substr(0, name.find('.'));
                              for (char& c : name)
                                  if (c == '-') c = '_';
-                             return info.param.coated ? name + "_coated" : name;
+                             return info.param.layered ? name + "_layered" : name;
                          });
 
 // With no schedule asked for, the renderer picks the device's: group on a

@@ -1,8 +1,8 @@
 // test_bsdf_kinds.cpp — the BSDF kinds (kernels/bsdf/kinds.h) against the
 // general BSDF (bsdf/bsdf.h), their oracle, on the device:
 //  1. for random opaque materials (metal and dielectric, rough and smooth,
-//     coloured specular, under no clear coat or a rough or smooth one, either
-//     hemisphere sampler) and random wo, wi, u, the
+//     coloured specular, under no clear coat or a rough or smooth one, with
+//     and without a sheen, either hemisphere sampler) and random wo, wi, u, the
 //     opaque kind at width 1 gives the general BSDF's f and pdf at wi and its
 //     sample (direction, f, pdf, Dirac or not) to within float rounding;
 //  2. at widths 8 and 16 it gives width 1's answers to the bit, so the group
@@ -27,7 +27,8 @@ namespace {
 // The inputs, a structure of arrays: each field's n values in turn
 // (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
-             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, CLEARCOAT, CLEARCOAT_ROUGHNESS, FIELD_COUNT };
+             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, CLEARCOAT, CLEARCOAT_ROUGHNESS,
+             SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS, FIELD_COUNT };
 // The answers per item: f at wi (3), its pdf, the sample's wi (3), f (3), pdf, delta.
 constexpr int kAnswer = 12;
 
@@ -57,6 +58,10 @@ Items random_items(size_t n, uint32_t seed) {
         const int coat = int(i / 6 % 4); // none; rough; a Dirac mirror at full weight; roughness 1
         set(CLEARCOAT, i, coat == 0 ? 0.0f : coat == 2 ? 1.0f : u01(rng));
         set(CLEARCOAT_ROUGHNESS, i, coat == 2 ? 0.01f : coat == 3 ? 1.0f : u01(rng));
+        const int sheen = int(i / 24 % 3); // none; red (one channel, as ToyCar's fabric); any colour
+        set(SHEEN_R, i, sheen == 0 ? 0.0f : u01(rng));
+        set(SHEEN_G, i, sheen == 2 ? u01(rng) : 0.0f), set(SHEEN_B, i, sheen == 2 ? u01(rng) : 0.0f);
+        set(SHEEN_ROUGHNESS, i, sheen == 2 && u01(rng) < 0.3f ? 0.0f : u01(rng)); // 0: below sheen.h's clamp
         for (int d = 0; d < 2; ++d) {
             float v[3] = {normal(rng), normal(rng), normal(rng)};
             const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
