@@ -12,25 +12,26 @@
 #include "bsdf/kinds/opaque.inc"
 #undef WF_W
 
+/* The queries' fields: the opaque kind's parameters in the order of its
+ * list (bsdf/kinds/opaque.inc), a field each real and three each colour, then
+ * wo, wi and u (tests/kernels/test_bsdf_kinds.cpp's Field). */
 #define IN(field) in[(field) * n + i]
+#define QUERY_REAL(name, has) \
+    q.params.name = IN(field); \
+    field += 1;
+#define QUERY_RGB(name, has)                                              \
+    q.params.name = (float3)(IN(field), IN(field + 1), IN(field + 2)); \
+    field += 3;
 WF_INLINE BsdfQuery probe_query(__global const float* in, uint n, uint i, uint hemisphere) {
     BsdfQuery q;
-    q.params.base_color = (float3)(IN(0), IN(1), IN(2));
-    q.params.metallic = IN(3);
-    q.params.roughness = IN(4);
+    uint field = 0;
+    WF_OPAQUE_PARAMS(QUERY_REAL, QUERY_RGB)
     q.params.transmission = 0.0f;
-    q.params.ior = IN(9);
-    q.params.specular = IN(5);
-    q.params.specular_color = (float3)(IN(6), IN(7), IN(8));
     q.params.thin_walled = 0u;
-    q.params.clearcoat = IN(19);
-    q.params.clearcoat_roughness = IN(20);
-    q.params.sheen_color = (float3)(IN(21), IN(22), IN(23));
-    q.params.sheen_roughness = IN(24);
     q.params.hemisphere = hemisphere;
-    q.wo = (float3)(IN(10), IN(11), IN(12));
-    q.wi_light = (float3)(IN(13), IN(14), IN(15));
-    q.u = (float3)(IN(16), IN(17), IN(18));
+    q.wo = (float3)(IN(field), IN(field + 1), IN(field + 2));
+    q.wi_light = (float3)(IN(field + 3), IN(field + 4), IN(field + 5));
+    q.u = (float3)(IN(field + 6), IN(field + 7), IN(field + 8));
     q.light = true;
     return q;
 }
@@ -53,44 +54,26 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
     store_answer(out + 12 * i, opaque_core_x1(&q));
 }
 
-#if WF_HAS_CLEARCOAT
-#define PROBE_COAT(W)                                  \
-    p.clearcoat = vload##W(i, in + 19 * n);            \
-    p.clearcoat_roughness = vload##W(i, in + 20 * n);
-#else
-#define PROBE_COAT(W)
-#endif
-#if WF_HAS_SHEEN
-#define PROBE_SHEEN(W)                                 \
-    p.sheen_color.r = vload##W(i, in + 21 * n);        \
-    p.sheen_color.g = vload##W(i, in + 22 * n);        \
-    p.sheen_color.b = vload##W(i, in + 23 * n);        \
-    p.sheen_roughness = vload##W(i, in + 24 * n);
-#else
-#define PROBE_SHEEN(W)
-#endif
-
-/* WF_W items a work-item, from the same arrays. */
+/* WF_W items a work-item, from the same arrays, PROBE_W wide. */
+#define PROBE_LOAD(f) WF_CAT(vload, PROBE_W)(i, in + (f) * n)
+#define PROBE_REAL(name, has) \
+    p.name = PROBE_LOAD(field); \
+    field += 1;
+#define PROBE_RGB(name, has)                \
+    p.name.r = PROBE_LOAD(field);           \
+    p.name.g = PROBE_LOAD(field + 1);       \
+    p.name.b = PROBE_LOAD(field + 2);       \
+    field += 3;
 #define LANE_PROBE(W)                                                                                         \
     __kernel void opaque_probe_x##W(__global const float* in, uint n, uint hemisphere, __global float* out) { \
         const uint i = get_global_id(0);                                                                      \
         OpaqueParams_x##W p;                                                                                  \
-        p.base_color.r = vload##W(i, in + 0 * n);                                                             \
-        p.base_color.g = vload##W(i, in + 1 * n);                                                             \
-        p.base_color.b = vload##W(i, in + 2 * n);                                                             \
-        p.metallic = vload##W(i, in + 3 * n);                                                                 \
-        p.roughness = vload##W(i, in + 4 * n);                                                                \
-        p.specular = vload##W(i, in + 5 * n);                                                                 \
-        p.specular_color.r = vload##W(i, in + 6 * n);                                                         \
-        p.specular_color.g = vload##W(i, in + 7 * n);                                                         \
-        p.specular_color.b = vload##W(i, in + 8 * n);                                                         \
-        p.ior = vload##W(i, in + 9 * n);                                                                      \
-        PROBE_COAT(W)                                                                                         \
-        PROBE_SHEEN(W)                                                                                        \
+        uint field = 0;                                                                                       \
+        WF_OPAQUE_PARAMS(PROBE_REAL, PROBE_RGB)                                                               \
         lvec##W wo, wi, u, sampled;                                                                           \
-        wo.x = vload##W(i, in + 10 * n), wo.y = vload##W(i, in + 11 * n), wo.z = vload##W(i, in + 12 * n);    \
-        wi.x = vload##W(i, in + 13 * n), wi.y = vload##W(i, in + 14 * n), wi.z = vload##W(i, in + 15 * n);    \
-        u.x = vload##W(i, in + 16 * n), u.y = vload##W(i, in + 17 * n), u.z = vload##W(i, in + 18 * n);       \
+        wo.x = PROBE_LOAD(field), wo.y = PROBE_LOAD(field + 1), wo.z = PROBE_LOAD(field + 2);                 \
+        wi.x = PROBE_LOAD(field + 3), wi.y = PROBE_LOAD(field + 4), wi.z = PROBE_LOAD(field + 5);             \
+        u.x = PROBE_LOAD(field + 6), u.y = PROBE_LOAD(field + 7), u.z = PROBE_LOAD(field + 8);                \
         const OpaqueAtWo_x##W at = opaque_at_wo_x##W(&p, wo);                                                 \
         lreal##W pdf_light, pdf;                                                                              \
         lint##W delta;                                                                                        \
@@ -100,5 +83,9 @@ __kernel void opaque_probe_x1(__global const float* in, uint n, uint hemisphere,
                                 sampled.z, f.r, f.g, f.b, pdf, convert_float##W(-delta)};                    \
         for (int k = 0; k < 12; ++k) vstore##W(v[k], i, out + k * n); /* answer-major */                    \
     }
+#define PROBE_W 8
 LANE_PROBE(8)
+#undef PROBE_W
+#define PROBE_W 16
 LANE_PROBE(16)
+#undef PROBE_W

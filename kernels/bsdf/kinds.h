@@ -45,24 +45,15 @@ typedef struct BsdfAnswer {
 } BsdfAnswer;
 
 #if WF_HAS_BSDF_OPAQUE
+#define WF_COPY_REAL(name, has) p.name = b->name;
+#define WF_COPY_RGB(name, has) p.name = rgb_from_float3(b->name);
 WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     OpaqueParams_x1 p;
-    p.base_color = rgb_from_float3(b->base_color);
-    p.metallic = b->metallic;
-    p.roughness = b->roughness;
-    p.specular = b->specular;
-    p.specular_color = rgb_from_float3(b->specular_color);
-    p.ior = b->ior;
-#if WF_HAS_CLEARCOAT
-    p.clearcoat = b->clearcoat;
-    p.clearcoat_roughness = b->clearcoat_roughness;
-#endif
-#if WF_HAS_SHEEN
-    p.sheen_color = rgb_from_float3(b->sheen_color);
-    p.sheen_roughness = b->sheen_roughness;
-#endif
+    WF_OPAQUE_PARAMS(WF_COPY_REAL, WF_COPY_RGB)
     return p;
 }
+#undef WF_COPY_REAL
+#undef WF_COPY_RGB
 
 WF_INLINE BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
     const OpaqueParams_x1 p = opaque_params_x1(&q->params);

@@ -52,14 +52,16 @@
 #define WF_LANE_CAPACITY ((WF_LOCAL_SIZE + WF_LANE_WIDTH - 1) / WF_LANE_WIDTH * WF_LANE_WIDTH)
 
 /* The fields of the structure of arrays, each WF_LANE_CAPACITY floats: the
- * BSDF query, the scatter's surface and the light sample's numbers or the
- * sample, then what the lanes give back. A field of three holds x, y, z (or
- * r, g, b) in turn; masks and the light's segment end are held as floats. */
+ * BSDF query (the kind's parameters, WF_LANE_PARAM_<name>, one field or
+ * three, none for a feature the program lacks: bsdf/kinds/opaque.inc's
+ * list), the scatter's surface and the light sample's numbers or the sample,
+ * then what the lanes give back. A field of three holds x, y, z (or r, g, b)
+ * in turn; masks and the light's segment end are held as floats. */
+#define WF_LANE_PARAM_REAL(name, has) WF_LANE_PARAM_##name, WF_LANE_PARAM_##name##_last = WF_LANE_PARAM_##name + (has) - 1,
+#define WF_LANE_PARAM_RGB(name, has) WF_LANE_PARAM_##name, WF_LANE_PARAM_##name##_last = WF_LANE_PARAM_##name + 3 * (has) - 1,
 enum LaneField {
-    WF_LANE_BASE, WF_LANE_METALLIC = WF_LANE_BASE + 3, WF_LANE_ROUGHNESS, WF_LANE_SPECULAR, WF_LANE_SPECULAR_COLOR,
-    WF_LANE_IOR = WF_LANE_SPECULAR_COLOR + 3, WF_LANE_CLEARCOAT, /* and its roughness: fields where the scene has a coat */
-    WF_LANE_SHEEN = WF_LANE_CLEARCOAT + 2 * WF_HAS_CLEARCOAT, /* colour and roughness, where it has a sheen */
-    WF_LANE_WO = WF_LANE_SHEEN + 4 * WF_HAS_SHEEN, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
+    WF_OPAQUE_PARAMS(WF_LANE_PARAM_REAL, WF_LANE_PARAM_RGB)
+    WF_LANE_WO, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
     WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
     WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
     WF_LANE_FRAME_Y = WF_LANE_FRAME_X + 3, WF_LANE_FRAME_Z = WF_LANE_FRAME_Y + 3,
@@ -81,6 +83,8 @@ enum LaneField {
     WF_LANE_ROULETTE_U, /* not the lanes' input: handed from shade_lanes_put to shade_lanes_get */
     WF_LANE_FIELDS
 };
+#undef WF_LANE_PARAM_REAL
+#undef WF_LANE_PARAM_RGB
 
 #define WF_LANE_AT(soa, field, at) (soa)[(field) * WF_LANE_CAPACITY + (at)]
 
@@ -108,20 +112,13 @@ WF_INLINE void lanes_put_light(__local float* soa, uint at, const LightSample* l
 
 WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
     const BsdfQuery* q = &c->query;
-    lanes_put3(soa, WF_LANE_BASE, at, q->params.base_color);
-    WF_LANE_AT(soa, WF_LANE_METALLIC, at) = q->params.metallic;
-    WF_LANE_AT(soa, WF_LANE_ROUGHNESS, at) = q->params.roughness;
-    WF_LANE_AT(soa, WF_LANE_SPECULAR, at) = q->params.specular;
-    lanes_put3(soa, WF_LANE_SPECULAR_COLOR, at, q->params.specular_color);
-    WF_LANE_AT(soa, WF_LANE_IOR, at) = q->params.ior;
-#if WF_HAS_CLEARCOAT
-    WF_LANE_AT(soa, WF_LANE_CLEARCOAT, at) = q->params.clearcoat;
-    WF_LANE_AT(soa, WF_LANE_CLEARCOAT + 1, at) = q->params.clearcoat_roughness;
-#endif
-#if WF_HAS_SHEEN
-    lanes_put3(soa, WF_LANE_SHEEN, at, q->params.sheen_color);
-    WF_LANE_AT(soa, WF_LANE_SHEEN + 3, at) = q->params.sheen_roughness;
-#endif
+#define WF_PUT_REAL(name, has) \
+    if (has) WF_LANE_AT(soa, WF_LANE_PARAM_##name, at) = q->params.name;
+#define WF_PUT_RGB(name, has) \
+    if (has) lanes_put3(soa, WF_LANE_PARAM_##name, at, q->params.name);
+    WF_OPAQUE_PARAMS(WF_PUT_REAL, WF_PUT_RGB)
+#undef WF_PUT_REAL
+#undef WF_PUT_RGB
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
     lanes_put3(soa, WF_LANE_U, at, q->u);
     lanes_put3(soa, WF_LANE_POSITION, at, c->position);
@@ -283,14 +280,15 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
     WF_LANE_STORE_RGB(emitted, WF_LANE_EMITTED, first);
 
     /* The material's factors: surface_bsdf's, no texture multiplying them. */
-    p->base_color = LFN(rgb)(LGATHER(m->base_color, material_at), LGATHER(m->base_color + 1, material_at),
-                             LGATHER(m->base_color + 2, material_at));
-    p->metallic = LGATHER(&m->metallic, material_at);
-    p->roughness = LGATHER(&m->roughness, material_at);
-    p->specular = LGATHER(&m->specular, material_at);
-    p->specular_color = LFN(rgb)(LGATHER(m->specular_color, material_at), LGATHER(m->specular_color + 1, material_at),
-                                 LGATHER(m->specular_color + 2, material_at));
-    p->ior = LGATHER(&m->ior, material_at);
+#define WF_GATHER_REAL(name, has) \
+    if (has) p->name = LGATHER(&m->name, material_at);
+#define WF_GATHER_RGB(name, has)                                                                        \
+    if (has)                                                                                            \
+        p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
+                           LGATHER(m->name + 2, material_at));
+    WF_OPAQUE_PARAMS(WF_GATHER_REAL, WF_GATHER_RGB)
+#undef WF_GATHER_REAL
+#undef WF_GATHER_RGB
 
     s->position = g.position;
     s->position_error = g.position_error;
@@ -324,20 +322,13 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     if (lanes_draw_numbers(params)) shade_lanes_numbers(soa, first, params);
     shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);
 #else
-    p.base_color = WF_LANE_LOAD_RGB(WF_LANE_BASE, first);
-    p.metallic = WF_LANE_LOAD(WF_LANE_METALLIC, first);
-    p.roughness = WF_LANE_LOAD(WF_LANE_ROUGHNESS, first);
-    p.specular = WF_LANE_LOAD(WF_LANE_SPECULAR, first);
-    p.specular_color = WF_LANE_LOAD_RGB(WF_LANE_SPECULAR_COLOR, first);
-    p.ior = WF_LANE_LOAD(WF_LANE_IOR, first);
-#if WF_HAS_CLEARCOAT
-    p.clearcoat = WF_LANE_LOAD(WF_LANE_CLEARCOAT, first);
-    p.clearcoat_roughness = WF_LANE_LOAD(WF_LANE_CLEARCOAT + 1, first);
-#endif
-#if WF_HAS_SHEEN
-    p.sheen_color = WF_LANE_LOAD_RGB(WF_LANE_SHEEN, first);
-    p.sheen_roughness = WF_LANE_LOAD(WF_LANE_SHEEN + 3, first);
-#endif
+#define WF_LOAD_REAL(name, has) \
+    if (has) p.name = WF_LANE_LOAD(WF_LANE_PARAM_##name, first);
+#define WF_LOAD_RGB(name, has) \
+    if (has) p.name = WF_LANE_LOAD_RGB(WF_LANE_PARAM_##name, first);
+    WF_OPAQUE_PARAMS(WF_LOAD_REAL, WF_LOAD_RGB)
+#undef WF_LOAD_REAL
+#undef WF_LOAD_RGB
     wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
     s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);

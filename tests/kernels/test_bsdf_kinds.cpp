@@ -24,11 +24,12 @@
 namespace wf {
 namespace {
 
-// The inputs, a structure of arrays: each field's n values in turn
-// (kernels/bsdf/kind_probe.cl's probe_query).
+// The inputs, a structure of arrays: each field's n values in turn, the
+// kind's parameters in the order of its list (kernels/bsdf/kinds/opaque.inc),
+// then wo, wi and u (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
-             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, CLEARCOAT, CLEARCOAT_ROUGHNESS,
-             SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS, FIELD_COUNT };
+             CLEARCOAT, CLEARCOAT_ROUGHNESS, SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS,
+             WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, FIELD_COUNT };
 // The answers per item: f at wi (3), its pdf, the sample's wi (3), f (3), pdf, delta.
 constexpr int kAnswer = 12;
 
