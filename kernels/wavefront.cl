@@ -234,6 +234,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
                     lane_at = atomic_inc(&lanes_length);
                     shade_lanes_put(lanes, lane_at, &shading);
                 } else {
+                    shade_shadow_ray(&path, &params, slot, &shading);
                     const BsdfAnswer answer = bsdf_core(shading.kind, &shading.query);
                     next = shade_scatter(&path, &params, slot, &shading, &answer);
                 }
@@ -253,7 +254,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
 #ifdef WF_GROUP_LANES
             if (lane_at < WF_LANE_CAPACITY && shade_lanes_emission(lanes, lane_at, &path, &params, &film, slot)) {
                 float roulette_u;
-                const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at, &roulette_u);
+                ShadowRay_x1 shadow_ray;
+                const Scatter_x1 scattered = shade_lanes_get(lanes, lane_at, &roulette_u, &shadow_ray);
+                if (scattered.shadow) write_shadow_ray(&path, slot, &shadow_ray);
                 next = write_scatter(&path, slot, &scattered, roulette_u);
             }
 #else

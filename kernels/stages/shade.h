@@ -235,47 +235,63 @@ WF_INLINE void shade_light(const RenderParams* params, const Scene* scene, Shade
                                                       vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
 }
 
-/* The scatter's inputs for one path, at width 1. */
-WF_INLINE void scatter_inputs_x1(const ShadeContext* c, const BsdfAnswer* a, ScatterSurface_x1* s,
-                                 ScatterLight_x1* l, ScatterAnswer_x1* answer) {
-    s->position = vec_from_float3(c->position);
-    s->position_error = vec_from_float3(c->position_error);
-    s->geometric_normal = vec_from_float3(c->geometric_normal);
-    s->frame_x = vec_from_float3(c->frame.x);
-    s->frame_y = vec_from_float3(c->frame.y);
-    s->frame_z = vec_from_float3(c->frame.z);
-    s->throughput = rgb_from_float3(c->throughput);
-    l->present = c->query.light;
-    l->sample.wi = vec_from_float3(c->light.wi);
-    l->sample.radiance = rgb_from_float3(c->light.radiance);
-    l->sample.pdf = c->light.pdf;
-    l->sample.delta = c->light.delta;
-    l->sample.segment_end = (int)c->light.segment_end;
-    l->sample.point = vec_from_float3(c->light.point);
-    l->sample.point_error = vec_from_float3(c->light.point_error);
-    l->sample.normal = vec_from_float3(c->light.normal);
-    l->wi_local_z = c->query.wi_light.z;
-    answer->f_light = rgb_from_float3(a->f_light);
-    answer->pdf_light = a->pdf_light;
-    answer->wi = vec_from_float3(a->sample.wi);
-    answer->f = rgb_from_float3(a->sample.f);
-    answer->pdf = a->sample.pdf;
-    answer->delta = a->sample.delta;
+/* The scatter's inputs for one path, at width 1: its surface, its light
+ * sample, and the BSDF core's answer. */
+WF_INLINE ScatterSurface_x1 scatter_surface_x1(const ShadeContext* c) {
+    ScatterSurface_x1 s;
+    s.position = vec_from_float3(c->position);
+    s.position_error = vec_from_float3(c->position_error);
+    s.geometric_normal = vec_from_float3(c->geometric_normal);
+    s.frame_x = vec_from_float3(c->frame.x);
+    s.frame_y = vec_from_float3(c->frame.y);
+    s.frame_z = vec_from_float3(c->frame.z);
+    s.throughput = rgb_from_float3(c->throughput);
+    return s;
 }
 
-/* A path's scatter (stages/scatter.inc), at any width, into its path state;
- * returns the queue the path goes to next. A path with a shadow ray waits
- * for it there (intersect_shadow sends it on), so no stage can overwrite the
- * pending ray whatever order the scheduler launches them in. */
+WF_INLINE ScatterLight_x1 scatter_light_x1(const ShadeContext* c) {
+    ScatterLight_x1 l;
+    l.present = c->query.light;
+    l.sample.wi = vec_from_float3(c->light.wi);
+    l.sample.radiance = rgb_from_float3(c->light.radiance);
+    l.sample.pdf = c->light.pdf;
+    l.sample.delta = c->light.delta;
+    l.sample.segment_end = (int)c->light.segment_end;
+    l.sample.point = vec_from_float3(c->light.point);
+    l.sample.point_error = vec_from_float3(c->light.point_error);
+    l.sample.normal = vec_from_float3(c->light.normal);
+    l.wi_local_z = c->query.wi_light.z;
+    return l;
+}
+
+WF_INLINE ScatterAnswer_x1 scatter_answer_x1(const BsdfAnswer* a) {
+    ScatterAnswer_x1 answer;
+    answer.f_light = rgb_from_float3(a->f_light);
+    answer.pdf_light = a->pdf_light;
+    answer.wi = vec_from_float3(a->sample.wi);
+    answer.f = rgb_from_float3(a->sample.f);
+    answer.pdf = a->sample.pdf;
+    answer.delta = a->sample.delta;
+    return answer;
+}
+
+/* A shadow ray (stages/scatter.inc) into the path state. */
+WF_INLINE void write_shadow_ray(PathState* path, uint slot, const ShadowRay_x1* r) {
+    path->shadow_origin[slot] = (float4)(vec_to_float3(r->origin), 0.0f);
+    path->shadow_segment[slot] = (float4)(vec_to_float3(r->segment), 0.0f);
+}
+
+/* A path's scatter (stages/scatter.inc), at any width, into its path state,
+ * its shadow ray already there (write_shadow_ray); returns the queue the path
+ * goes to next. A path with a shadow ray waits for it there
+ * (intersect_shadow sends it on), so no stage can overwrite the pending ray
+ * whatever order the scheduler launches them in. */
 WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out, float roulette_u) {
     const uint depth = path_depth(path, slot);
-    if (out->shadow) {
-        path->shadow_origin[slot] = (float4)(vec_to_float3(out->shadow_origin), 0.0f);
-        path->shadow_segment[slot] = (float4)(vec_to_float3(out->shadow_segment), 0.0f);
+    if (out->shadow)
         /* What intersect_shadow needs to send the path on: the bounce layer
          * the light joins if it arrives, and whether the path goes on after it. */
         set_shadow_light(path, slot, rgb_to_float3(out->shadow_light), depth + 1u, out->continues);
-    }
     if (out->continues) {
         set_path_throughput(path, slot, rgb_to_float3(out->throughput), depth + 1u);
         set_path_ray(path, slot, vec_to_float3(out->ray_origin), vec_to_float3(out->ray_direction), out->ray_pdf,
@@ -284,16 +300,26 @@ WF_INLINE uint write_scatter(PathState* path, uint slot, const Scatter_x1* out, 
     return out->shadow ? WF_QUEUE_SHADOW : out->continues ? WF_QUEUE_CONTINUE : WF_QUEUE_FINISHED;
 }
 
-/* The scatter of one path: the shadow ray of the light sample, weighed by
- * MIS, and the continuation ray of the BSDF sample, into the path state;
- * returns the queue the path goes to next. */
+/* The shadow ray of a path's light sample, into its path state before the
+ * BSDF core runs (stages/scatter.inc says why); where the scatter then keeps
+ * no shadow ray, nothing reads it. */
+WF_INLINE void shade_shadow_ray(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c) {
+    if (!c->query.light) return;
+    const ScatterSurface_x1 s = scatter_surface_x1(c);
+    const ScatterLight_x1 l = scatter_light_x1(c);
+    const ShadowRay_x1 r = shadow_ray_x1(&s, &l.sample, 2.0f * params->scene_diameter);
+    write_shadow_ray(path, slot, &r);
+}
+
+/* The scatter of one path: the shadow ray's light, weighed by MIS, and the
+ * continuation ray of the BSDF sample, into the path state (after
+ * shade_shadow_ray); returns the queue the path goes to next. */
 WF_INLINE uint shade_scatter(PathState* path, const RenderParams* params, uint slot, const ShadeContext* c,
                              const BsdfAnswer* a) {
-    ScatterSurface_x1 s;
-    ScatterLight_x1 l;
-    ScatterAnswer_x1 answer;
-    scatter_inputs_x1(c, a, &s, &l, &answer);
-    const Scatter_x1 out = scatter_x1(&s, &l, &answer, params->light_sampling, 2.0f * params->scene_diameter);
+    const ScatterSurface_x1 s = scatter_surface_x1(c);
+    const ScatterLight_x1 l = scatter_light_x1(c);
+    const ScatterAnswer_x1 answer = scatter_answer_x1(a);
+    const Scatter_x1 out = scatter_x1(&s, &l, &answer, params->light_sampling);
     return write_scatter(path, slot, &out, c->roulette_u);
 }
 
@@ -307,6 +333,7 @@ WF_GPU_INLINE uint shade_path(PathState* path, const RenderParams* params, uint 
         !shade_surface(path, params, slot, scene, film, &arrival, &c))
         return WF_QUEUE_FINISHED;
     shade_light(params, scene, &c);
+    shade_shadow_ray(path, params, slot, &c);
     const BsdfAnswer a = bsdf_core(c.kind, &c.query);
     return shade_scatter(path, params, slot, &c, &a);
 }

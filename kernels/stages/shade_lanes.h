@@ -185,14 +185,14 @@ WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState
 }
 #endif
 
-/* The scatter of the path put at `at`, as scatter_x1 gives it, and its
- * roulette number. */
-WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* roulette_u) {
+/* The scatter of the path put at `at`, as scatter_x1 gives it, its shadow
+ * ray, and its roulette number. */
+WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* roulette_u, ShadowRay_x1* shadow_ray) {
     *roulette_u = WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at);
+    shadow_ray->origin = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_ORIGIN, at));
+    shadow_ray->segment = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_SEGMENT, at));
     Scatter_x1 out;
     out.shadow = WF_LANE_AT(soa, WF_LANE_SHADOW, at) != 0.0f;
-    out.shadow_origin = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_ORIGIN, at));
-    out.shadow_segment = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_SEGMENT, at));
     out.shadow_light = rgb_from_float3(lanes_get3(soa, WF_LANE_SHADOW_LIGHT, at));
     out.continues = WF_LANE_AT(soa, WF_LANE_CONTINUES, at) != 0.0f;
     out.throughput = rgb_from_float3(lanes_get3(soa, WF_LANE_NEXT_THROUGHPUT, at));
@@ -386,11 +386,11 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     a.f_light = LFN(opaque_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
     a.f = LFN(opaque_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
 
-    const LFN(Scatter) out =
-        LFN(scatter)(&s, &l, &a, params->light_sampling, 2.0f * params->scene_diameter);
+    const LFN(ShadowRay) shadow_ray = LFN(shadow_ray)(&s, &l.sample, 2.0f * params->scene_diameter);
+    const LFN(Scatter) out = LFN(scatter)(&s, &l, &a, params->light_sampling);
     WF_LANE_STORE(WF_LANE_FROM_MASK(out.shadow), WF_LANE_SHADOW, first);
-    WF_LANE_STORE_VEC(out.shadow_origin, WF_LANE_SHADOW_ORIGIN, first);
-    WF_LANE_STORE_VEC(out.shadow_segment, WF_LANE_SHADOW_SEGMENT, first);
+    WF_LANE_STORE_VEC(shadow_ray.origin, WF_LANE_SHADOW_ORIGIN, first);
+    WF_LANE_STORE_VEC(shadow_ray.segment, WF_LANE_SHADOW_SEGMENT, first);
     WF_LANE_STORE_RGB(out.shadow_light, WF_LANE_SHADOW_LIGHT, first);
     WF_LANE_STORE(WF_LANE_FROM_MASK(out.continues), WF_LANE_CONTINUES, first);
     WF_LANE_STORE_RGB(out.throughput, WF_LANE_NEXT_THROUGHPUT, first);
