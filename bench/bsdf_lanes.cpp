@@ -3,10 +3,12 @@
 // (kernels/bsdf/kind_probe.cl): the whole BSDF core of one shading point (the
 // BSDF at a light sample's direction, and a sampled continuation) for 4M
 // random queries on opaque materials (the Cornell box's white and a rough
-// gold), four ways: the general BSDF, and the opaque kind at widths 1, 8 and
-// 16. Prints each one's rate, and checks the lanes give width 1's bits.
+// gold; with --layered, ToyCar's: a clear coat over a dielectric, and a red
+// sheen over a rough dielectric), four ways: the general BSDF, and the opaque
+// kind at widths 1, 8 and 16. Prints each one's rate, and checks the lanes
+// give width 1's bits.
 //
-// Usage: build/bench/wavefront_bsdf_lanes [--device SPEC]
+// Usage: build/bench/wavefront_bsdf_lanes [--layered] [--device SPEC]
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +29,9 @@ namespace {
 constexpr int kParams = 16, kFields = kParams + 9, kAnswer = 12;
 
 // The Cornell box's white (a rough dielectric over its base) and a rough gold
-// metal, alternately, at random wo (above the surface), wi and u.
-std::vector<float> random_queries(size_t n) {
+// metal, alternately, at random wo (above the surface), wi and u; layered:
+// ToyCar's coated body and sheened fabric instead.
+std::vector<float> random_queries(size_t n, bool layered) {
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     std::normal_distribution<float> normal;
@@ -40,6 +43,15 @@ std::vector<float> random_queries(size_t n) {
         const float params[7] = {gold ? 1.0f : 0.0f, gold ? 0.5f : 1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f};
         for (int k = 0; k < 3; ++k) set(k, i, base[k]);
         for (int k = 0; k < 7; ++k) set(3 + k, i, params[k]); // metallic, roughness, specular, its colour, ior
+        if (layered) {
+            // The body: a clear coat of roughness 0.05 over a glossy dielectric; the fabric:
+            // a red sheen of roughness 0.5 over a rough dark dielectric.
+            const float body[3] = {0.6f, 0.1f, 0.1f}, fabric[3] = {0.15f, 0.15f, 0.15f};
+            for (int k = 0; k < 3; ++k) set(k, i, gold ? fabric[k] : body[k]);
+            set(3, i, 0.0f), set(4, i, gold ? 1.0f : 0.3f);
+            set(10, i, gold ? 0.0f : 1.0f), set(11, i, 0.05f);                       // clear coat, roughness
+            set(12, i, gold ? 1.0f : 0.0f), set(13, i, 0.0f), set(14, i, 0.0f), set(15, i, 0.5f); // sheen
+        }
         for (int d = 0; d < 2; ++d) {
             float v[3] = {normal(rng), normal(rng), normal(rng)};
             const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -54,23 +66,37 @@ std::vector<float> random_queries(size_t n) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::string spec = argc == 3 && std::strcmp(argv[1], "--device") == 0 ? argv[2] : "cpu";
+    bool layered = false;
+    std::string spec = "cpu";
+    for (int a = 1; a < argc; ++a) {
+        if (std::strcmp(argv[a], "--layered") == 0) {
+            layered = true;
+        } else if (std::strcmp(argv[a], "--device") == 0 && a + 1 < argc) {
+            spec = argv[++a];
+        } else {
+            std::fprintf(stderr, "wavefront_bsdf_lanes: unknown argument %s; usage: [--layered] [--device SPEC]\n",
+                         argv[a]);
+            return 2;
+        }
+    }
     const wf::OpenClDevice device = wf::open_device(spec);
     cl::Program program(device.context, wf::expand_kernel_source("bsdf/kind_probe.cl"));
-    // The kind as a program without coats or sheens compiles it (the Cornell box's).
-    if (program.build({device.info.device}, "-cl-std=CL1.2 -DWF_LANE_WIDTH=8 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0") !=
-        CL_SUCCESS) {
+    // The kind as a program of the scene compiles it: without coats or
+    // sheens for the Cornell box's materials, with both for ToyCar's.
+    const std::string options = std::string("-cl-std=CL1.2 -DWF_LANE_WIDTH=8") +
+                                (layered ? "" : " -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0");
+    if (program.build({device.info.device}, options.c_str()) != CL_SUCCESS) {
         std::fprintf(stderr, "%s\n", program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device).c_str());
         return 1;
     }
     const size_t n = size_t(1) << 22, local = 64;
-    const std::vector<float> in = random_queries(n);
+    const std::vector<float> in = random_queries(n, layered);
     cl::Buffer input(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
                      const_cast<float*>(in.data()));
     cl::Buffer output(device.context, CL_MEM_WRITE_ONLY, kAnswer * n * sizeof(float));
 
-    std::printf("%s: the BSDF core (eval at the light sample + sample) of %zu queries, local size %zu, best of 5\n",
-                device.info.name.c_str(), n, local);
+    std::printf("%s: the BSDF core (eval at the light sample + sample) of %zu %s queries, local size %zu, best of 5\n",
+                device.info.name.c_str(), n, layered ? "coated and sheened" : "opaque", local);
     std::vector<float> width_one;
     double general_rate = 0.0;
     for (const auto& [name, width] : std::vector<std::pair<const char*, int>>{
