@@ -41,7 +41,9 @@ struct Items {
 };
 
 // Opaque materials of every sort, at random directions: wo above the surface
-// (the kind's domain; shade flips the frame so), wi on either side.
+// (the kind's domain; shade flips the frame so), wi on either side; one item in
+// eleven at an extreme (normal incidence, grazing, the mirror direction, u at 0
+// or just below 1), where a lobe's formulas meet 0/0 or overflow first.
 Items random_items(size_t n, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -70,6 +72,20 @@ Items random_items(size_t n, uint32_t seed) {
             for (int k = 0; k < 3; ++k) set((d == 0 ? WO_X : WI_X) + k, i, v[k] / len);
         }
         set(U_X, i, u01(rng)), set(U_Y, i, u01(rng)), set(U_Z, i, u01(rng));
+        if (i % 11 == 0) { // the extremes: normal incidence, grazing wo or wi, the mirror direction, u's ends
+            const float grazing = 1e-6f, last = 0x1.fffffep-1f;
+            switch (i / 11 % 6) {
+            case 0: set(WO_X, i, 0.0f), set(WO_Y, i, 0.0f), set(WO_Z, i, 1.0f); break;
+            case 1: set(WO_X, i, 1.0f), set(WO_Y, i, 0.0f), set(WO_Z, i, grazing); break;
+            case 2: set(WI_X, i, 0.6f), set(WI_Y, i, 0.8f), set(WI_Z, i, i % 2 ? grazing : -grazing); break;
+            case 3:
+                set(WI_X, i, -items.in[WO_X * n + i]), set(WI_Y, i, -items.in[WO_Y * n + i]);
+                set(WI_Z, i, items.in[WO_Z * n + i]);
+                break;
+            case 4: set(U_X, i, 0.0f), set(U_Y, i, 0.0f), set(U_Z, i, 0.0f); break;
+            default: set(U_X, i, last), set(U_Y, i, last), set(U_Z, i, last); break;
+            }
+        }
     }
     return items;
 }
