@@ -70,7 +70,10 @@ WF_DEVICE_BEGIN
     X(0x00000008u, 0x88888888u, 0xe8006868u, 0x800800f8u) X(0x00000004u, 0xccccccccu, 0x5c009c9cu, 0xc00c0074u) \
     X(0x00000002u, 0xaaaaaaaau, 0x8e00eeeeu, 0x200200a2u) X(0x00000001u, 0xffffffffu, 0xc5005555u, 0x50050093u)
 
-/* A 32-bit constant's bits in reverse order, as a constant expression. */
+/* Bit reversal's step, swapping the bit groups `mask` selects with their
+ * neighbours `shift` above; and a 32-bit constant's bits in reverse order
+ * by its steps, as a constant expression (sobol_reverse_bits takes them at
+ * run time). */
 #define WF_SOBOL_SWAP(x, shift, mask) ((((x) >> (shift)) & (mask)) | (((x) & (mask)) << (shift)))
 #define WF_SOBOL_REVERSED(x)                                                                                 \
     WF_SOBOL_SWAP(WF_SOBOL_SWAP(WF_SOBOL_SWAP(WF_SOBOL_SWAP(((x) >> 16) | ((x) << 16), 8u, 0x00ff00ffu), 4u, \
@@ -154,11 +157,10 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
     /* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */                                 \
     WF_INLINE T sobol_reverse_bits##suffix(T x) {                                                                    \
         x = (x >> 16u) | (x << 16u);                                                                                 \
-        x = ((x >> 8u) & WF_SOBOL_SCALAR(0x00ff00ffu)) | ((x & WF_SOBOL_SCALAR(0x00ff00ffu)) << 8u);                 \
-        x = ((x >> 4u) & WF_SOBOL_SCALAR(0x0f0f0f0fu)) | ((x & WF_SOBOL_SCALAR(0x0f0f0f0fu)) << 4u);                 \
-        x = ((x >> 2u) & WF_SOBOL_SCALAR(0x33333333u)) | ((x & WF_SOBOL_SCALAR(0x33333333u)) << 2u);                 \
-        x = ((x >> 1u) & WF_SOBOL_SCALAR(0x55555555u)) | ((x & WF_SOBOL_SCALAR(0x55555555u)) << 1u);                 \
-        return x;                                                                                                    \
+        x = WF_SOBOL_SWAP(x, 8u, WF_SOBOL_SCALAR(0x00ff00ffu));                                                      \
+        x = WF_SOBOL_SWAP(x, 4u, WF_SOBOL_SCALAR(0x0f0f0f0fu));                                                      \
+        x = WF_SOBOL_SWAP(x, 2u, WF_SOBOL_SCALAR(0x33333333u));                                                      \
+        return WF_SOBOL_SWAP(x, 1u, WF_SOBOL_SCALAR(0x55555555u));                                                   \
     }                                                                                                                \
     /* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants                                     \
      * from Wellons' hash-prospector search), for combining keys into seeds. */                                      \
