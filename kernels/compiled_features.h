@@ -25,8 +25,11 @@
 #ifndef WF_HAS_ENVIRONMENT
 #define WF_HAS_ENVIRONMENT 1
 #endif
-/* The general BSDF's lobes over the base (bsdf/bsdf.h): KHR_materials_clearcoat
- * and KHR_materials_sheen. */
+/* The BSDF's lobes beyond the base and its interface's reflection (bsdf/bsdf.h):
+ * KHR_materials_transmission, KHR_materials_clearcoat and KHR_materials_sheen. */
+#ifndef WF_HAS_TRANSMISSION
+#define WF_HAS_TRANSMISSION 1
+#endif
 #ifndef WF_HAS_CLEARCOAT
 #define WF_HAS_CLEARCOAT 1
 #endif

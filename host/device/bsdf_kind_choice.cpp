@@ -3,15 +3,14 @@
 
 namespace wf {
 
+bool has_transmission(const SceneMaterial& m) { return m.transmission > 0.0f; }
+
 bool has_clearcoat(const SceneMaterial& m) { return m.clearcoat > 0.0f; }
 
 bool has_sheen(const SceneMaterial& m) {
     return m.sheen_color.r > 0.0f || m.sheen_color.g > 0.0f || m.sheen_color.b > 0.0f;
 }
 
-uint32_t bsdf_kind_of(const SceneMaterial& m) {
-    if (m.transmission > 0.0f) return WF_BSDF_GENERAL;
-    return WF_BSDF_OPAQUE;
-}
+uint32_t bsdf_kind_of(const SceneMaterial&) { return WF_BSDF_OPAQUE; }
 
 } // namespace wf

@@ -14,6 +14,7 @@ namespace wf {
 uint32_t bsdf_kind_of(const SceneMaterial& m);
 
 // Whether the material has the lobe at all (its factor above 0).
+bool has_transmission(const SceneMaterial& m);
 bool has_clearcoat(const SceneMaterial& m);
 bool has_sheen(const SceneMaterial& m);
 

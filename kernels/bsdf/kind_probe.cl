@@ -26,8 +26,6 @@ WF_INLINE BsdfQuery probe_query(__global const float* in, uint n, uint i, uint h
     BsdfQuery q;
     uint field = 0;
     WF_OPAQUE_PARAMS(QUERY_REAL, QUERY_RGB)
-    q.params.transmission = 0.0f;
-    q.params.thin_walled = 0u;
     q.params.hemisphere = hemisphere;
     q.wo = (float3)(IN(field), IN(field + 1), IN(field + 2));
     q.wi_light = (float3)(IN(field + 3), IN(field + 4), IN(field + 5));

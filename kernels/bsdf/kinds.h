@@ -50,6 +50,9 @@ typedef struct BsdfAnswer {
 WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
     OpaqueParams_x1 p;
     WF_OPAQUE_PARAMS(WF_COPY_REAL, WF_COPY_RGB)
+#if WF_GLASS_TABLE_IN_SCENE
+    p.glass_table = b->glass_table;
+#endif
     return p;
 }
 #undef WF_COPY_REAL

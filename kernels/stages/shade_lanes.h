@@ -33,12 +33,13 @@
      !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
 
 /* No textures, normal maps, vertex colours or first-hit AOVs, and every
- * material of the opaque kind without a coat or sheen: a hit's surface is
+ * material of the opaque kind without transmission, a coat or sheen: a
+ * hit's surface (on the side the ray arrived from, no inside) is
  * its triangle's corners and normals and its material's factors, and the
  * lanes find it too (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
+     !WF_HAS_BSDF_GENERAL && !WF_HAS_TRANSMISSION && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
@@ -279,16 +280,21 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
     WF_LANE_STORE(WF_LANE_FROM_MASK(emits), WF_LANE_EMITS, first);
     WF_LANE_STORE_RGB(emitted, WF_LANE_EMITTED, first);
 
-    /* The material's factors: surface_bsdf's, no texture multiplying them. */
-#define WF_GATHER_REAL(name, has) \
-    if (has) p->name = LGATHER(&m->name, material_at);
-#define WF_GATHER_RGB(name, has)                                                                        \
-    if (has)                                                                                            \
-        p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
-                           LGATHER(m->name + 2, material_at));
+    /* The material's factors: surface_bsdf's, no texture multiplying them.
+     * Only those of the program's features, by preprocessing (each feature's
+     * define is 0 or 1): Material holds no thin_walled, which a surface in
+     * lanes never has. */
+#define WF_GATHER_IF_0(...)
+#define WF_GATHER_IF_1(...) __VA_ARGS__
+#define WF_GATHER_REAL(name, has) WF_CAT(WF_GATHER_IF_, has)(p->name = LGATHER(&m->name, material_at);)
+#define WF_GATHER_RGB(name, has)                                                                               \
+    WF_CAT(WF_GATHER_IF_, has)(p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
+                                                  LGATHER(m->name + 2, material_at));)
     WF_OPAQUE_PARAMS(WF_GATHER_REAL, WF_GATHER_RGB)
 #undef WF_GATHER_REAL
 #undef WF_GATHER_RGB
+#undef WF_GATHER_IF_0
+#undef WF_GATHER_IF_1
 
     s->position = g.position;
     s->position_error = g.position_error;

@@ -1,8 +1,10 @@
 // test_bsdf_kinds.cpp — the BSDF kinds (kernels/bsdf/kinds.h) against the
 // general BSDF (bsdf/bsdf.h), their oracle, on the device:
-//  1. for random opaque materials (metal and dielectric, rough and smooth,
+//  1. for random materials (metal and dielectric, rough and smooth,
 //     coloured specular, under no clear coat or a rough or smooth one, with
-//     and without a sheen, either hemisphere sampler) and random wo, wi, u, the
+//     and without a sheen, opaque or transmitting as a thin wall or a solid
+//     seen from outside or inside, either hemisphere sampler) and random wo,
+//     wi, u, the
 //     opaque kind at width 1 gives the general BSDF's f and pdf at wi and its
 //     sample (direction, f, pdf, Dirac or not) to within float rounding;
 //  2. at widths 8 and 16 it gives width 1's answers to the bit, so the group
@@ -28,7 +30,7 @@ namespace {
 // kind's parameters in the order of its list (kernels/bsdf/kinds/opaque.inc),
 // then wo, wi and u (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
-             CLEARCOAT, CLEARCOAT_ROUGHNESS, SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS,
+             CLEARCOAT, CLEARCOAT_ROUGHNESS, SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS, TRANSMISSION, THIN_WALLED,
              WO_X, WO_Y, WO_Z, WI_X, WI_Y, WI_Z, U_X, U_Y, U_Z, FIELD_COUNT };
 // The answers per item: f at wi (3), its pdf, the sample's wi (3), f (3), pdf, delta.
 constexpr int kAnswer = 12;
@@ -40,8 +42,9 @@ struct Items {
     size_t n;
 };
 
-// Opaque materials of every sort, at random directions: wo above the surface
-// (the kind's domain; shade flips the frame so), wi on either side; one item in
+// Materials of every sort, at random directions: wo above the surface (the
+// kind's domain; shade flips the frame so) but for a solid that transmits,
+// which is seen from inside too (wo.z < 0); wi on either side; one item in
 // eleven at an extreme (normal incidence, grazing, the mirror direction, u at 0
 // or just below 1), where a lobe's formulas meet 0/0 or overflow first.
 Items random_items(size_t n, uint32_t seed) {
@@ -65,6 +68,11 @@ Items random_items(size_t n, uint32_t seed) {
         set(SHEEN_R, i, sheen == 0 ? 0.0f : u01(rng));
         set(SHEEN_G, i, sheen == 2 ? u01(rng) : 0.0f), set(SHEEN_B, i, sheen == 2 ? u01(rng) : 0.0f);
         set(SHEEN_ROUGHNESS, i, sheen == 2 && u01(rng) < 0.3f ? 0.0f : u01(rng)); // 0: below sheen.h's clamp
+        const int glass = int(i / 72 % 3); // opaque; a thin wall; a solid
+        set(TRANSMISSION, i, glass == 0 ? 0.0f : u01(rng) < 0.5f ? 1.0f : u01(rng));
+        set(THIN_WALLED, i, glass == 1 ? 1.0f : 0.0f);
+        if (glass != 0) // any ior, 1 among them (a Dirac interface whatever the roughness)
+            set(IOR, i, u01(rng) < 0.1f ? 1.0f : 1.0f + 1.5f * u01(rng));
         for (int d = 0; d < 2; ++d) {
             float v[3] = {normal(rng), normal(rng), normal(rng)};
             const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -86,6 +94,7 @@ Items random_items(size_t n, uint32_t seed) {
             default: set(U_X, i, last), set(U_Y, i, last), set(U_Z, i, last); break;
             }
         }
+        if (glass == 2 && u01(rng) < 0.5f) set(WO_Z, i, -items.in[WO_Z * n + i]); // from inside the solid
     }
     return items;
 }
