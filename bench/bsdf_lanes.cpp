@@ -4,7 +4,7 @@
 // BSDF at a light sample's direction, and a sampled continuation) for 4M
 // random queries on opaque materials (the Cornell box's white and a rough
 // gold; with --layered, ToyCar's: a clear coat over a dielectric, and a red
-// sheen over a rough dielectric), four ways: the general BSDF, and the opaque
+// sheen over a rough dielectric), four ways: the general BSDF, and the layered
 // kind at widths 1, 8 and 16. Prints each one's rate, and checks the lanes
 // give width 1's bits.
 //
@@ -24,9 +24,9 @@
 
 namespace {
 
-// kind_probe.cl's probe_query fields (the opaque kind's 16 parameters, its
-// coat's and sheen's left 0 here, then wo, wi, u), and answers.
-constexpr int kParams = 16, kFields = kParams + 9, kAnswer = 12;
+// kind_probe.cl's probe_query fields (the layered kind's 18 parameters, its
+// coat's, sheen's and transmission's left 0 here, then wo, wi, u), and answers.
+constexpr int kParams = 18, kFields = kParams + 9, kAnswer = 12;
 
 // The Cornell box's white (a rough dielectric over its base) and a rough gold
 // metal, alternately, at random wo (above the surface), wi and u; layered:
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
     std::vector<float> width_one;
     double general_rate = 0.0;
     for (const auto& [name, width] : std::vector<std::pair<const char*, int>>{
-             {"general_probe", 1}, {"opaque_probe_x1", 1}, {"opaque_probe_x8", 8}, {"opaque_probe_x16", 16}}) {
+             {"general_probe", 1}, {"layered_probe_x1", 1}, {"layered_probe_x8", 8}, {"layered_probe_x16", 16}}) {
         cl::Kernel kernel(program, name);
         kernel.setArg(0, input);
         kernel.setArg(1, cl_uint(n));
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
         std::vector<float> out(kAnswer * n);
         device.queue.enqueueReadBuffer(output, CL_TRUE, 0, out.size() * sizeof(float), out.data());
         std::string agreement;
-        if (width == 1 && std::strcmp(name, "opaque_probe_x1") == 0) width_one = out;
+        if (width == 1 && std::strcmp(name, "layered_probe_x1") == 0) width_one = out;
         if (width > 1) { // lanes write field-major
             size_t differing = 0;
             for (size_t i = 0; i < n; ++i)

@@ -37,11 +37,8 @@
 #define WF_HAS_SHEEN 1
 #endif
 /* The BSDF kinds (wavefront/bsdf_kinds.h): WF_HAS_BSDF_<KIND>. */
-#ifndef WF_HAS_BSDF_GENERAL
-#define WF_HAS_BSDF_GENERAL 1
-#endif
-#ifndef WF_HAS_BSDF_OPAQUE
-#define WF_HAS_BSDF_OPAQUE 1
+#ifndef WF_HAS_BSDF_LAYERED
+#define WF_HAS_BSDF_LAYERED 1
 #endif
 
 #endif

@@ -207,9 +207,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         barrier(CLK_LOCAL_MEM_FENCE);
 #ifdef WF_GROUP_LANES
         /* Shade in three steps: each path's arrival and surface, after
-         * which a path of a kind with lanes waits in local memory (with its
-         * light sample, unless the lanes take it) and any other is shaded to
-         * its end; those waiting, WF_LANE_WIDTH paths a work-item
+         * which a path that goes on waits in local memory (with its light
+         * sample, unless the lanes take it); those waiting, WF_LANE_WIDTH paths a work-item
          * (stages/shade_lanes.h); their emission and scatters into the path
          * state. Where the lanes find the surface too (WF_SURFACE_IN_LANES),
          * every hit waits after its arrival alone. */
@@ -229,15 +228,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             ShadeContext shading;
             if (shade_arrival(&path, &params, slot, &scene, &film, &arrival) &&
                 shade_surface(&path, &params, slot, &scene, &film, &arrival, &shading)) {
-                if (!WF_LIGHTS_IN_LANES || shading.kind != WF_BSDF_OPAQUE) shade_light(&params, &scene, &shading);
-                if (shading.kind == WF_BSDF_OPAQUE) {
-                    lane_at = atomic_inc(&lanes_length);
-                    shade_lanes_put(lanes, lane_at, &shading);
-                } else {
-                    shade_shadow_ray(&path, &params, slot, &shading);
-                    const BsdfAnswer answer = bsdf_core(shading.kind, &shading.query);
-                    next = shade_scatter(&path, &params, slot, &shading, &answer);
-                }
+                if (!WF_LIGHTS_IN_LANES) shade_light(&params, &scene, &shading);
+                lane_at = atomic_inc(&lanes_length);
+                shade_lanes_put(lanes, lane_at, &shading);
             }
 #endif
         }

@@ -11,6 +11,6 @@ bool has_sheen(const SceneMaterial& m) {
     return m.sheen_color.r > 0.0f || m.sheen_color.g > 0.0f || m.sheen_color.b > 0.0f;
 }
 
-uint32_t bsdf_kind_of(const SceneMaterial&) { return WF_BSDF_OPAQUE; }
+uint32_t bsdf_kind_of(const SceneMaterial&) { return WF_BSDF_LAYERED; }
 
 } // namespace wf

@@ -11,7 +11,6 @@
 #include "base/alias_table.h"
 #include "bsdf/albedo_tables.h"
 #include "bsdf/coat_fresnel.h"
-#include "device/bsdf_kind_choice.h"
 #include "device/device_buffer.h"
 #include "device/textured_emission.h"
 #include "scene/environment_map.h"
@@ -144,7 +143,6 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         dm.clearcoat_roughness = m.clearcoat_roughness;
         store3(dm.sheen_color, m.sheen_color);
         dm.sheen_roughness = m.sheen_roughness;
-        dm.bsdf_kind = bsdf_kind_of(m);
         store3(dm.emission, m.emission);
         dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
         d.materials.push_back(dm);

@@ -95,8 +95,7 @@ typedef struct Material {
     float clearcoat_roughness; /* in [0, 1] */
     float sheen_color[3];      /* KHR_materials_sheen's sheenColorFactor, in [0, 1]; black: no sheen */
     float sheen_roughness;     /* in [0, 1] */
-    uint32_t bsdf_kind;        /* WF_BSDF_* (wavefront/bsdf_kinds.h): the lobes it can have */
-    uint32_t pad[2];
+    uint32_t pad[3];
 } Material;
 
 /* A texture as the kernels sample it (kernels/materials/texture.h). Texels

@@ -1,10 +1,10 @@
 /* kinds.h — the BSDF kinds (include/wavefront/bsdf_kinds.h) a program holds:
  * each written once in the lane vocabulary (lanes/lanes.h) and expanded here at
  * width 1, and at WF_LANE_WIDTH where the group schedule shades in lanes; and
- * the BSDF core of one path at width 1, which dispatches on the material's
- * kind: what the shade stage calls between the surface and the scatter
- * (stages/shade.h). The general BSDF (bsdf/bsdf.h) is the kind of the
- * materials no other covers, and the oracle the others are tested against. */
+ * the BSDF core of one path at width 1: what the shade stage calls between
+ * the surface and the scatter (stages/shade.h). The general BSDF
+ * (bsdf/bsdf.h) is the oracle the kinds are tested against
+ * (bsdf/kind_probe.cl). */
 #ifndef WF_BSDF_KINDS_H
 #define WF_BSDF_KINDS_H
 
@@ -14,17 +14,17 @@
 #include "bsdf/bsdf.h"
 #include "lanes/lanes.h"
 
-#if WF_HAS_BSDF_OPAQUE
+#if WF_HAS_BSDF_LAYERED
 #define WF_W 1
 #include "lanes/lane_width.inc"
-#include "bsdf/kinds/opaque.inc"
+#include "bsdf/kinds/layered.inc"
 #undef WF_W
 /* The group schedule's lanes: the host sets WF_LANE_WIDTH (8 on CPUs of
  * 8-float vectors or wider, or --lane-width). */
 #if defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
-#include "bsdf/kinds/opaque.inc"
+#include "bsdf/kinds/layered.inc"
 #undef WF_W
 #endif
 #endif
@@ -44,12 +44,12 @@ typedef struct BsdfAnswer {
     BsdfSample sample;
 } BsdfAnswer;
 
-#if WF_HAS_BSDF_OPAQUE
+#if WF_HAS_BSDF_LAYERED
 #define WF_COPY_REAL(name, has) p.name = b->name;
 #define WF_COPY_RGB(name, has) p.name = rgb_from_float3(b->name);
-WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
-    OpaqueParams_x1 p;
-    WF_OPAQUE_PARAMS(WF_COPY_REAL, WF_COPY_RGB)
+WF_INLINE LayeredParams_x1 layered_params_x1(const BsdfParams* b) {
+    LayeredParams_x1 p;
+    WF_LAYERED_PARAMS(WF_COPY_REAL, WF_COPY_RGB)
 #if WF_GLASS_TABLE_IN_SCENE
     p.glass_table = b->glass_table;
 #endif
@@ -58,19 +58,19 @@ WF_INLINE OpaqueParams_x1 opaque_params_x1(const BsdfParams* b) {
 #undef WF_COPY_REAL
 #undef WF_COPY_RGB
 
-WF_INLINE BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
-    const OpaqueParams_x1 p = opaque_params_x1(&q->params);
+WF_INLINE BsdfAnswer layered_core_x1(const BsdfQuery* q) {
+    const LayeredParams_x1 p = layered_params_x1(&q->params);
     const lvec1 wo = vec_from_float3(q->wo);
-    const OpaqueAtWo_x1 at = opaque_at_wo_x1(&p, wo);
+    const LayeredAtWo_x1 at = layered_at_wo_x1(&p, wo);
     BsdfAnswer a;
     a.f_light = (float3)(0.0f);
     a.pdf_light = 0.0f;
     if (q->light)
         a.f_light = rgb_to_float3(
-            opaque_eval_pdf_x1(&p, &at, wo, vec_from_float3(q->wi_light), q->params.hemisphere, &a.pdf_light));
+            layered_eval_pdf_x1(&p, &at, wo, vec_from_float3(q->wi_light), q->params.hemisphere, &a.pdf_light));
     lvec1 wi;
     int delta;
-    a.sample.f = rgb_to_float3(opaque_sample_x1(&p, &at, wo, vec_from_float3(q->u), q->params.hemisphere, &wi,
+    a.sample.f = rgb_to_float3(layered_sample_x1(&p, &at, wo, vec_from_float3(q->u), q->params.hemisphere, &wi,
                                                 &a.sample.pdf, &delta));
     a.sample.wi = vec_to_float3(wi);
     a.sample.delta = delta;
@@ -78,27 +78,7 @@ WF_INLINE BsdfAnswer opaque_core_x1(const BsdfQuery* q) {
 }
 #endif
 
-#if WF_HAS_BSDF_GENERAL || !WF_HAS_BSDF_OPAQUE
-WF_INLINE BsdfAnswer general_core(const BsdfQuery* q) {
-    const BsdfAtWo at = bsdf_at_wo(&q->params, q->wo); /* once, for both techniques */
-    BsdfAnswer a;
-    a.f_light = (float3)(0.0f);
-    a.pdf_light = 0.0f;
-    if (q->light) a.f_light = bsdf_eval_pdf_at(&q->params, &at, q->wo, q->wi_light, &a.pdf_light);
-    a.sample = bsdf_sample_at(&q->params, &at, q->wo, q->u);
-    return a;
-}
-#endif
-
-/* The core at width 1, by the material's kind. */
-WF_GPU_INLINE BsdfAnswer bsdf_core(uint kind, const BsdfQuery* q) {
-#if WF_HAS_BSDF_OPAQUE && (WF_HAS_BSDF_GENERAL)
-    return kind == WF_BSDF_OPAQUE ? opaque_core_x1(q) : general_core(q);
-#elif WF_HAS_BSDF_OPAQUE
-    return opaque_core_x1(q);
-#else
-    return general_core(q);
-#endif
-}
+/* The core at width 1: the kind's, every material's (wavefront/bsdf_kinds.h). */
+WF_GPU_INLINE BsdfAnswer bsdf_core(const BsdfQuery* q) { return layered_core_x1(q); }
 
 #endif

@@ -71,7 +71,6 @@ typedef struct ShadingFrame {
 /* What the surface hands on to the scatter, around the BSDF core. */
 typedef struct ShadeContext {
     BsdfQuery query;
-    uint kind; /* WF_BSDF_*: whose core answers the query */
     float3 position, position_error, geometric_normal; /* geometric_normal on the frame's side */
     ShadingFrame frame;
     float3 throughput;
@@ -197,7 +196,6 @@ WF_GPU_INLINE bool shade_surface(PathState* path, const RenderParams* params, ui
 
     BsdfQuery* q = &c->query;
     q->params = surface_bsdf(m, scene, &point, params->hemisphere);
-    c->kind = m->bsdf_kind;
     /* An opaque or thin-walled surface is shaded on the side the ray arrived
      * from; a solid transmissive one keeps its front (counter-clockwise) side
      * as +z, so that wo.z < 0 says the ray arrived from inside. */
@@ -335,7 +333,7 @@ WF_GPU_INLINE uint shade_path(PathState* path, const RenderParams* params, uint 
         return WF_QUEUE_FINISHED;
     shade_light(params, scene, &c);
     shade_shadow_ray(path, params, slot, &c);
-    const BsdfAnswer a = bsdf_core(c.kind, &c.query);
+    const BsdfAnswer a = bsdf_core(&c.query);
     return shade_scatter(path, params, slot, &c, &a);
 }
 

@@ -4,7 +4,7 @@
  * path a work-item, after shade_surface), their light sample, BSDF core and
  * scatter run WF_LANE_WIDTH at a time by the width-generic code
  * (shade_lanes_run, one work-item a run of lanes: lights/light_lanes.inc,
- * bsdf/kinds/opaque.inc, stages/scatter.inc), and each path's scatter read
+ * bsdf/kinds/layered.inc, stages/scatter.inc), and each path's scatter read
  * back (shade_lanes_get) for write_scatter. The light sample is taken in
  * lanes where every light is an emissive triangle whose emission is its
  * material's factor (WF_LIGHTS_IN_LANES), else by shade_light a path at a
@@ -22,24 +22,24 @@
 #include "bsdf/kinds.h"
 #include "stages/shade.h"
 
-#if WF_HAS_BSDF_OPAQUE && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
+#if WF_HAS_BSDF_LAYERED && defined(WF_LANE_WIDTH) && WF_LANE_WIDTH > 1 && defined(WF_LOCAL_SIZE)
 #define WF_GROUP_LANES 1
 
 /* Emissive triangles the only lights, and none textured, coated (a clear
- * coat or the general kind's sheen weighs the emission beneath) or
+ * coat weighs the emission beneath) or
  * alpha-masked: lights/light_lanes.inc samples them in lanes. */
 #define WF_LIGHTS_IN_LANES                                                                          \
     (WF_HAS_EMISSIVE_TRIANGLES && !WF_HAS_PUNCTUAL_LIGHTS && !WF_HAS_ENVIRONMENT && !WF_HAS_TEXTURES && \
-     !WF_HAS_ALPHA_MASK && !WF_HAS_BSDF_GENERAL && !WF_HAS_CLEARCOAT)
+     !WF_HAS_ALPHA_MASK && !WF_HAS_CLEARCOAT)
 
 /* No textures, normal maps, vertex colours or first-hit AOVs, and every
- * material of the opaque kind without transmission, a coat or sheen: a
+ * material without transmission, a coat or sheen: a
  * hit's surface (on the side the ray arrived from, no inside) is
  * its triangle's corners and normals and its material's factors, and the
  * lanes find it too (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_BSDF_GENERAL && !WF_HAS_TRANSMISSION && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
+     !WF_HAS_TRANSMISSION && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
@@ -54,14 +54,14 @@
 
 /* The fields of the structure of arrays, each WF_LANE_CAPACITY floats: the
  * BSDF query (the kind's parameters, WF_LANE_PARAM_<name>, one field or
- * three, none for a feature the program lacks: bsdf/kinds/opaque.inc's
+ * three, none for a feature the program lacks: bsdf/kinds/layered.inc's
  * list), the scatter's surface and the light sample's numbers or the sample,
  * then what the lanes give back. A field of three holds x, y, z (or r, g, b)
  * in turn; masks and the light's segment end are held as floats. */
 #define WF_LANE_PARAM_REAL(name, has) WF_LANE_PARAM_##name, WF_LANE_PARAM_##name##_last = WF_LANE_PARAM_##name + (has) - 1,
 #define WF_LANE_PARAM_RGB(name, has) WF_LANE_PARAM_##name, WF_LANE_PARAM_##name##_last = WF_LANE_PARAM_##name + 3 * (has) - 1,
 enum LaneField {
-    WF_OPAQUE_PARAMS(WF_LANE_PARAM_REAL, WF_LANE_PARAM_RGB)
+    WF_LAYERED_PARAMS(WF_LANE_PARAM_REAL, WF_LANE_PARAM_RGB)
     WF_LANE_WO, WF_LANE_WI_LIGHT = WF_LANE_WO + 3,
     WF_LANE_U = WF_LANE_WI_LIGHT + 3, WF_LANE_POSITION = WF_LANE_U + 3, WF_LANE_POSITION_ERROR = WF_LANE_POSITION + 3,
     WF_LANE_GEOMETRIC_NORMAL = WF_LANE_POSITION_ERROR + 3, WF_LANE_FRAME_X = WF_LANE_GEOMETRIC_NORMAL + 3,
@@ -117,7 +117,7 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
     if (has) WF_LANE_AT(soa, WF_LANE_PARAM_##name, at) = q->params.name;
 #define WF_PUT_RGB(name, has) \
     if (has) lanes_put3(soa, WF_LANE_PARAM_##name, at, q->params.name);
-    WF_OPAQUE_PARAMS(WF_PUT_REAL, WF_PUT_RGB)
+    WF_LAYERED_PARAMS(WF_PUT_REAL, WF_PUT_RGB)
 #undef WF_PUT_REAL
 #undef WF_PUT_RGB
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
@@ -247,11 +247,12 @@ WF_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderP
 
 /* shade_surface in lanes, for the arrivals put at [first, first + WF_LANE_WIDTH):
  * the point and its normals, the emission found (into the lanes' fields, for
- * shade_lanes_emission), the material's factors, the frame and wo (the opaque
- * kind has no inside: the frame is on the side the ray arrived from), and
+ * shade_lanes_emission), the material's factors, the frame and wo (no
+ * material transmits here, so none has an inside: the frame is on the side
+ * the ray arrived from), and
  * whether the path takes a light sample (bsdf_is_delta's rule for this kind). */
 WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderParams* params, const Scene* scene,
-                                   LFN(OpaqueParams) * p, LVEC* wo, LFN(ScatterSurface) * s, LINT* light) {
+                                   LFN(LayeredParams) * p, LVEC* wo, LFN(ScatterSurface) * s, LINT* light) {
     const LINT triangle = LASINT(WF_LANE_LOAD(WF_LANE_TRIANGLE, first));
     const LREAL t = WF_LANE_LOAD(WF_LANE_HIT, first);
     const LVEC direction = WF_LANE_LOAD_VEC(WF_LANE_DIRECTION, first);
@@ -290,7 +291,7 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
 #define WF_GATHER_RGB(name, has)                                                                               \
     WF_CAT(WF_GATHER_IF_, has)(p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
                                                   LGATHER(m->name + 2, material_at));)
-    WF_OPAQUE_PARAMS(WF_GATHER_REAL, WF_GATHER_RGB)
+    WF_LAYERED_PARAMS(WF_GATHER_REAL, WF_GATHER_RGB)
 #undef WF_GATHER_REAL
 #undef WF_GATHER_RGB
 #undef WF_GATHER_IF_0
@@ -320,7 +321,7 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
                                const Scene* scene) {
     for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
         for (uint f = 0; f < WF_LANE_INPUTS; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
-    LFN(OpaqueParams) p;
+    LFN(LayeredParams) p;
     LVEC wo;
     LFN(ScatterSurface) s;
     LFN(ScatterLight) l;
@@ -332,7 +333,7 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     if (has) p.name = WF_LANE_LOAD(WF_LANE_PARAM_##name, first);
 #define WF_LOAD_RGB(name, has) \
     if (has) p.name = WF_LANE_LOAD_RGB(WF_LANE_PARAM_##name, first);
-    WF_OPAQUE_PARAMS(WF_LOAD_REAL, WF_LOAD_RGB)
+    WF_LAYERED_PARAMS(WF_LOAD_REAL, WF_LOAD_RGB)
 #undef WF_LOAD_REAL
 #undef WF_LOAD_RGB
     wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
@@ -387,10 +388,10 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
 #endif
     l.wi_local_z = wi_light.z;
 
-    const LFN(OpaqueAtWo) at = LFN(opaque_at_wo)(&p, wo);
+    const LFN(LayeredAtWo) at = LFN(layered_at_wo)(&p, wo);
     LFN(ScatterAnswer) a;
-    a.f_light = LFN(opaque_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
-    a.f = LFN(opaque_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
+    a.f_light = LFN(layered_eval_pdf)(&p, &at, wo, wi_light, params->hemisphere, &a.pdf_light);
+    a.f = LFN(layered_sample)(&p, &at, wo, u, params->hemisphere, &a.wi, &a.pdf, &a.delta);
 
     const LFN(ShadowRay) shadow_ray = LFN(shadow_ray)(&s, &l.sample, 2.0f * params->scene_diameter);
     const LFN(Scatter) out = LFN(scatter)(&s, &l, &a, params->light_sampling);

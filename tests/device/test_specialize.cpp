@@ -41,19 +41,19 @@ void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& ca
 
 TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
-    EXPECT_EQ(describe_features(scene_features(cornell)), "opaque BSDF, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(cornell)), "layered BSDF, emissive triangles");
     EXPECT_EQ(feature_defines(scene_features(cornell)),
-              "-DWF_HAS_BSDF_GENERAL=0 -DWF_HAS_BSDF_OPAQUE=1 -DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
+              "-DWF_HAS_BSDF_LAYERED=1 -DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
               "-DWF_HAS_EMISSIVE_TRIANGLES=1 "
               "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0 -DWF_HAS_TRANSMISSION=0 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0");
     const Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
-    EXPECT_EQ(describe_features(scene_features(helmet)), "opaque BSDF, textures, normal maps, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(helmet)), "layered BSDF, textures, normal maps, emissive triangles");
     EXPECT_EQ(describe_features(SceneFeatures::all()),
-              "general BSDF, opaque BSDF, textures, normal maps, alpha mask, vertex colours, emissive triangles, punctual lights, "
+              "layered BSDF, textures, normal maps, alpha mask, vertex colours, emissive triangles, punctual lights, "
               "environment, transmission, clear coat, sheen");
     const Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
     EXPECT_EQ(describe_features(scene_features(car)),
-              "opaque BSDF, textures, normal maps, emissive triangles, transmission, clear coat, sheen");
+              "layered BSDF, textures, normal maps, emissive triangles, transmission, clear coat, sheen");
 }
 
 TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {

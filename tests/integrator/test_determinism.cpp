@@ -60,8 +60,8 @@ TEST(Determinism, RoundsDoNotChangeOneBit) {
 // functions in the same order along each path, a BSDF kind's lanes give its
 // width-1 bits, and a pixel's samples are still added in order by its one
 // slot: the bytes are the same, on a scene that uses every kind of work
-// (glossy and glass bounces, shadow rays, roulette; opaque and general BSDF
-// kinds, with and without a clear coat or sheen) and with a pool smaller
+// (glossy and glass bounces, shadow rays, roulette; the layered kind's
+// lobes, with and without a clear coat or sheen) and with a pool smaller
 // than the image, so slots own several pixels.
 struct DeterminismScene {
     const char* file;

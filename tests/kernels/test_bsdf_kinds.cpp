@@ -5,7 +5,7 @@
 //     and without a sheen, opaque or transmitting as a thin wall or a solid
 //     seen from outside or inside, either hemisphere sampler) and random wo,
 //     wi, u, the
-//     opaque kind at width 1 gives the general BSDF's f and pdf at wi and its
+//     layered kind at width 1 gives the general BSDF's f and pdf at wi and its
 //     sample (direction, f, pdf, Dirac or not) to within float rounding;
 //  2. at widths 8 and 16 it gives width 1's answers to the bit, so the group
 //     schedule's lanes and the megakernel make the same image bytes.
@@ -27,7 +27,7 @@ namespace wf {
 namespace {
 
 // The inputs, a structure of arrays: each field's n values in turn, the
-// kind's parameters in the order of its list (kernels/bsdf/kinds/opaque.inc),
+// kind's parameters in the order of its list (kernels/bsdf/kinds/layered.inc),
 // then wo, wi and u (kernels/bsdf/kind_probe.cl's probe_query).
 enum Field { BASE_R, BASE_G, BASE_B, METALLIC, ROUGHNESS, SPECULAR, SPEC_R, SPEC_G, SPEC_B, IOR,
              CLEARCOAT, CLEARCOAT_ROUGHNESS, SHEEN_R, SHEEN_G, SHEEN_B, SHEEN_ROUGHNESS, TRANSMISSION, THIN_WALLED,
@@ -128,18 +128,18 @@ cl::Program probe_program() {
     return test::build_test_program(expand_kernel_source("bsdf/kind_probe.cl"), "-DWF_LANE_WIDTH=8");
 }
 
-TEST_P(BsdfKinds, OpaqueMatchesTheGeneralBsdf) {
+TEST_P(BsdfKinds, LayeredMatchesTheGeneralBsdf) {
     const Items items = random_items(4096, 11 + GetParam());
     const cl::Program program = probe_program();
     const std::vector<float> general = run_probe(program, "general_probe", items, GetParam(), 1);
-    const std::vector<float> opaque = run_probe(program, "opaque_probe_x1", items, GetParam(), 1);
+    const std::vector<float> layered = run_probe(program, "layered_probe_x1", items, GetParam(), 1);
     // Restated arithmetic rounds differently: a relative 1e-4, except where a
     // value is a difference of nearly equal terms (an absolute 1e-5 of 1).
     auto close = [](float a, float b) { return std::fabs(a - b) <= 1e-4f * std::max(std::fabs(a), std::fabs(b)) + 1e-5f; };
     int differing = 0, samples = 0, deltas = 0;
     for (size_t i = 0; i < items.n; ++i) {
         const float* g = &general[kAnswer * i];
-        const float* o = &opaque[kAnswer * i];
+        const float* o = &layered[kAnswer * i];
         samples += g[10] > 0.0f;
         deltas += g[11] != 0.0f;
         bool same = true;
@@ -149,10 +149,10 @@ TEST_P(BsdfKinds, OpaqueMatchesTheGeneralBsdf) {
         if (!same && ++differing <= 5) {
             std::string row;
             for (int k = 0; k < kAnswer; ++k) row += " " + std::to_string(g[k]) + "/" + std::to_string(o[k]);
-            ADD_FAILURE() << "item " << i << " (general/opaque):" << row;
+            ADD_FAILURE() << "item " << i << " (general/layered):" << row;
         }
     }
-    test::report_measured("opaque kind vs general BSDF: " + std::to_string(items.n) + " queries (" +
+    test::report_measured("layered kind vs general BSDF: " + std::to_string(items.n) + " queries (" +
                           std::to_string(samples) + " samples, " + std::to_string(deltas) + " Dirac), " +
                           std::to_string(differing) + " differ");
     EXPECT_EQ(differing, 0);
@@ -160,12 +160,12 @@ TEST_P(BsdfKinds, OpaqueMatchesTheGeneralBsdf) {
     EXPECT_GT(deltas, 0);
 }
 
-TEST_P(BsdfKinds, OpaqueLanesGiveWidthOnesBits) {
+TEST_P(BsdfKinds, LayeredLanesGiveWidthOnesBits) {
     const Items items = random_items(4096, 23 + GetParam());
     const cl::Program program = probe_program();
-    const std::vector<float> one = run_probe(program, "opaque_probe_x1", items, GetParam(), 1);
+    const std::vector<float> one = run_probe(program, "layered_probe_x1", items, GetParam(), 1);
     for (int width : {8, 16}) {
-        const std::string name = "opaque_probe_x" + std::to_string(width);
+        const std::string name = "layered_probe_x" + std::to_string(width);
         const std::vector<float> lanes = run_probe(program, name.c_str(), items, GetParam(), width);
         int differing = 0;
         for (size_t i = 0; i < items.n; ++i)
