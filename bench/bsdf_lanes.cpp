@@ -4,11 +4,13 @@
 // BSDF at a light sample's direction, and a sampled continuation) for 4M
 // random queries on opaque materials (the Cornell box's white and a rough
 // gold; with --layered, ToyCar's: a clear coat over a dielectric, and a red
-// sheen over a rough dielectric), four ways: the general BSDF, and the layered
-// kind at widths 1, 8 and 16. Prints each one's rate, and checks the lanes
-// give width 1's bits.
+// sheen over a rough dielectric; with --glass, the Cornell glass sphere's
+// smooth solid and a rough one, seen from outside and inside), four ways: the
+// general BSDF, and the layered kind at widths 1, 8 and 16, each built with
+// the lobes such a scene's program has. Prints each one's rate, and checks
+// the lanes give width 1's bits.
 //
-// Usage: build/bench/wavefront_bsdf_lanes [--layered] [--device SPEC]
+// Usage: build/bench/wavefront_bsdf_lanes [--layered | --glass] [--device SPEC]
 
 #include <algorithm>
 #include <cmath>
@@ -28,10 +30,14 @@ namespace {
 // coat's, sheen's and transmission's left 0 here, then wo, wi, u), and answers.
 constexpr int kParams = 18, kFields = kParams + 9, kAnswer = 12;
 
+enum class Materials { Opaque, Layered, Glass };
+
 // The Cornell box's white (a rough dielectric over its base) and a rough gold
 // metal, alternately, at random wo (above the surface), wi and u; layered:
-// ToyCar's coated body and sheened fabric instead.
-std::vector<float> random_queries(size_t n, bool layered) {
+// ToyCar's coated body and sheened fabric instead; glass: a clear smooth
+// solid and one of roughness 0.3, wo on either side.
+std::vector<float> random_queries(size_t n, Materials materials) {
+    const bool layered = materials == Materials::Layered, glass = materials == Materials::Glass;
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     std::normal_distribution<float> normal;
@@ -52,10 +58,14 @@ std::vector<float> random_queries(size_t n, bool layered) {
             set(10, i, gold ? 0.0f : 1.0f), set(11, i, 0.05f);                       // clear coat, roughness
             set(12, i, gold ? 1.0f : 0.0f), set(13, i, 0.0f), set(14, i, 0.0f), set(15, i, 0.5f); // sheen
         }
+        if (glass) { // white, clear, ior 1.5; smooth, or rough (the second of each pair)
+            for (int k = 0; k < 3; ++k) set(k, i, 1.0f);
+            set(3, i, 0.0f), set(4, i, gold ? 0.3f : 0.0f), set(16, i, 1.0f); // metallic, roughness, transmission
+        }
         for (int d = 0; d < 2; ++d) {
             float v[3] = {normal(rng), normal(rng), normal(rng)};
             const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-            if (d == 0) v[2] = std::fabs(v[2]);
+            if (d == 0 && !(glass && u01(rng) < 0.5f)) v[2] = std::fabs(v[2]); // a solid is seen from inside too
             for (int k = 0; k < 3; ++k) set(kParams + 3 * d + k, i, v[k] / length);
         }
         for (int k = 0; k < 3; ++k) set(kParams + 6 + k, i, u01(rng));
@@ -66,37 +76,42 @@ std::vector<float> random_queries(size_t n, bool layered) {
 } // namespace
 
 int main(int argc, char** argv) {
-    bool layered = false;
+    Materials materials = Materials::Opaque;
     std::string spec = "cpu";
     for (int a = 1; a < argc; ++a) {
         if (std::strcmp(argv[a], "--layered") == 0) {
-            layered = true;
+            materials = Materials::Layered;
+        } else if (std::strcmp(argv[a], "--glass") == 0) {
+            materials = Materials::Glass;
         } else if (std::strcmp(argv[a], "--device") == 0 && a + 1 < argc) {
             spec = argv[++a];
         } else {
-            std::fprintf(stderr, "wavefront_bsdf_lanes: unknown argument %s; usage: [--layered] [--device SPEC]\n",
+            std::fprintf(stderr, "wavefront_bsdf_lanes: unknown argument %s; usage: [--layered | --glass] [--device SPEC]\n",
                          argv[a]);
             return 2;
         }
     }
     const wf::OpenClDevice device = wf::open_device(spec);
     cl::Program program(device.context, wf::expand_kernel_source("bsdf/kind_probe.cl"));
-    // The kind as a program of the scene compiles it: without coats or
-    // sheens for the Cornell box's materials, with both for ToyCar's.
-    const std::string options = std::string("-cl-std=CL1.2 -DWF_LANE_WIDTH=8") +
-                                (layered ? "" : " -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0");
+    // The kind as a program of the scene compiles it: without coats, sheens
+    // or transmission for the Cornell box's materials, with the coat and
+    // sheen for ToyCar's, with the transmission alone for the glass sphere's.
+    const char* lobes[] = {" -DWF_HAS_TRANSMISSION=0 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0",
+                           " -DWF_HAS_TRANSMISSION=0", " -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0"};
+    const std::string options = std::string("-cl-std=CL1.2 -DWF_LANE_WIDTH=8") + lobes[int(materials)];
     if (program.build({device.info.device}, options.c_str()) != CL_SUCCESS) {
         std::fprintf(stderr, "%s\n", program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device.info.device).c_str());
         return 1;
     }
     const size_t n = size_t(1) << 22, local = 64;
-    const std::vector<float> in = random_queries(n, layered);
+    const std::vector<float> in = random_queries(n, materials);
     cl::Buffer input(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
                      const_cast<float*>(in.data()));
     cl::Buffer output(device.context, CL_MEM_WRITE_ONLY, kAnswer * n * sizeof(float));
 
+    const char* described[] = {"opaque", "coated and sheened", "glass"};
     std::printf("%s: the BSDF core (eval at the light sample + sample) of %zu %s queries, local size %zu, best of 5\n",
-                device.info.name.c_str(), n, layered ? "coated and sheened" : "opaque", local);
+                device.info.name.c_str(), n, described[int(materials)], local);
     std::vector<float> width_one;
     double general_rate = 0.0;
     for (const auto& [name, width] : std::vector<std::pair<const char*, int>>{
