@@ -144,7 +144,8 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         store3(dm.sheen_color, m.sheen_color);
         dm.sheen_roughness = m.sheen_roughness;
         store3(dm.emission, m.emission);
-        dm.flags = (m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u) | (m.thin_walled ? WF_MATERIAL_THIN_WALLED : 0u);
+        dm.thin_walled = m.thin_walled ? 1.0f : 0.0f;
+        dm.flags = m.double_sided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
         d.materials.push_back(dm);
     }
     // A GPU's program reads the glass table from here (bsdf/albedo.h); only glass reads it at all.

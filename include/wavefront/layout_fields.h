@@ -20,7 +20,7 @@
     X(Material, base_color) X(Material, flags) X(Material, emission) X(Material, metallic)       \
     X(Material, roughness) X(Material, transmission) X(Material, ior) X(Material, specular)        \
     X(Material, specular_color) X(Material, clearcoat) X(Material, clearcoat_roughness)           \
-    X(Material, sheen_color) X(Material, sheen_roughness)                  \
+    X(Material, sheen_color) X(Material, sheen_roughness) X(Material, thin_walled)                 \
     X(LightEntry, probability) X(LightEntry, alias) X(LightEntry, index) X(LightEntry, pmf)       \
     X(LightEntry, kind)                                                                           \
     X(Camera, origin) X(Camera, tan_half_fov_y) X(Camera, right) X(Camera, aspect) X(Camera, up)  \

@@ -75,7 +75,6 @@ typedef struct TriangleColors {
 } TriangleColors;
 
 #define WF_MATERIAL_DOUBLE_SIDED 1u /* emits from both faces */
-#define WF_MATERIAL_THIN_WALLED 2u  /* transmission without KHR_materials_volume: a sheet, no inside */
 #define WF_MATERIAL_VERTEX_COLORS 4u /* its triangles' COLOR_0 is in the colors buffer */
 
 /* glTF 2.0 metallic-roughness, with KHR_materials_transmission, _ior,
@@ -95,7 +94,8 @@ typedef struct Material {
     float clearcoat_roughness; /* in [0, 1] */
     float sheen_color[3];      /* KHR_materials_sheen's sheenColorFactor, in [0, 1]; black: no sheen */
     float sheen_roughness;     /* in [0, 1] */
-    uint32_t pad[3];
+    float thin_walled;         /* 1: transmission without KHR_materials_volume, a sheet with no inside; 0: a solid */
+    uint32_t pad[2];
 } Material;
 
 /* A texture as the kernels sample it (kernels/materials/texture.h). Texels

@@ -33,7 +33,7 @@ WF_INLINE BsdfParams surface_bsdf(__global const Material* m, const Scene* scene
     b.ior = m->ior;
     b.specular = m->specular * surface_texture(scene, p, WF_TEXTURE_SPECULAR).w;
     b.specular_color = vload3(0, m->specular_color) * surface_texture(scene, p, WF_TEXTURE_SPECULAR_COLOR).xyz;
-    b.thin_walled = (m->flags & WF_MATERIAL_THIN_WALLED) != 0u;
+    b.thin_walled = m->thin_walled != 0.0f;
     b.clearcoat = surface_clearcoat(m, scene, p);
     b.clearcoat_roughness = m->clearcoat_roughness;
     if (WF_HAS_CLEARCOAT && m->clearcoat > 0.0f)

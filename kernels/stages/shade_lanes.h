@@ -32,14 +32,13 @@
     (WF_HAS_EMISSIVE_TRIANGLES && !WF_HAS_PUNCTUAL_LIGHTS && !WF_HAS_ENVIRONMENT && !WF_HAS_TEXTURES && \
      !WF_HAS_ALPHA_MASK && !WF_HAS_CLEARCOAT)
 
-/* No textures, normal maps, vertex colours or first-hit AOVs, and every
- * material without transmission, a coat or sheen: a
- * hit's surface (on the side the ray arrived from, no inside) is
- * its triangle's corners and normals and its material's factors, and the
- * lanes find it too (stages/surface.inc). */
+/* No textures, normal maps, vertex colours or first-hit AOVs, and no
+ * material with a coat or sheen: a hit's surface is its triangle's corners
+ * and normals and its material's factors, and the lanes find it too
+ * (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_TRANSMISSION && !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
+     !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
@@ -247,9 +246,8 @@ WF_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderP
 
 /* shade_surface in lanes, for the arrivals put at [first, first + WF_LANE_WIDTH):
  * the point and its normals, the emission found (into the lanes' fields, for
- * shade_lanes_emission), the material's factors, the frame and wo (no
- * material transmits here, so none has an inside: the frame is on the side
- * the ray arrived from), and
+ * shade_lanes_emission), the material's factors, the frame and wo (on the
+ * side the ray arrived from, but a solid's, which keeps its front), and
  * whether the path takes a light sample (bsdf_is_delta's rule for this kind). */
 WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderParams* params, const Scene* scene,
                                    LFN(LayeredParams) * p, LVEC* wo, LFN(ScatterSurface) * s, LINT* light) {
@@ -281,33 +279,40 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
     WF_LANE_STORE(WF_LANE_FROM_MASK(emits), WF_LANE_EMITS, first);
     WF_LANE_STORE_RGB(emitted, WF_LANE_EMITTED, first);
 
-    /* The material's factors: surface_bsdf's, no texture multiplying them.
-     * Only those of the program's features, by preprocessing (each feature's
-     * define is 0 or 1): Material holds no thin_walled, which a surface in
-     * lanes never has. */
-#define WF_GATHER_IF_0(...)
-#define WF_GATHER_IF_1(...) __VA_ARGS__
-#define WF_GATHER_REAL(name, has) WF_CAT(WF_GATHER_IF_, has)(p->name = LGATHER(&m->name, material_at);)
-#define WF_GATHER_RGB(name, has)                                                                               \
-    WF_CAT(WF_GATHER_IF_, has)(p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
-                                                  LGATHER(m->name + 2, material_at));)
+    /* The material's factors: surface_bsdf's, no texture multiplying them. */
+#define WF_GATHER_REAL(name, has) \
+    if (has) p->name = LGATHER(&m->name, material_at);
+#define WF_GATHER_RGB(name, has)                                                                        \
+    if (has)                                                                                            \
+        p->name = LFN(rgb)(LGATHER(m->name, material_at), LGATHER(m->name + 1, material_at), \
+                           LGATHER(m->name + 2, material_at));
     WF_LAYERED_PARAMS(WF_GATHER_REAL, WF_GATHER_RGB)
 #undef WF_GATHER_REAL
 #undef WF_GATHER_RGB
-#undef WF_GATHER_IF_0
-#undef WF_GATHER_IF_1
 
     s->position = g.position;
     s->position_error = g.position_error;
     s->geometric_normal = g.geometric_normal;
     s->frame_z = LFN(facing)(g.normal, g.geometric_normal);
+#if WF_HAS_TRANSMISSION
+    /* A solid keeps its front side as +z (shade_surface's rule): wo.z < 0 from inside. */
+    const LINT flip = p->transmission > 0.0f && !(p->thin_walled != 0.0f) && !g.front_face;
+    s->frame_z = LFN(vec_sel)(flip, LFN(vec_scale)(s->frame_z, -1.0f), s->frame_z);
+    s->geometric_normal = LFN(vec_sel)(flip, LFN(vec_scale)(s->geometric_normal, -1.0f), s->geometric_normal);
+#endif
     LFN(orthonormal_basis)(s->frame_z, &s->frame_x, &s->frame_y);
     *wo = LFN(vec_in_frame)(LFN(vec_scale)(direction, -1.0f), s->frame_x, s->frame_y, s->frame_z);
 
     /* bsdf_is_delta: a smooth interface over no diffuse albedo. */
+#if WF_HAS_TRANSMISSION
+    const LRGB albedo = LFN(rgb_scale)(p->base_color, (1.0f - p->metallic) * (1.0f - p->transmission));
+    const LINT smooth = p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA || (p->transmission > 0.0f && p->ior == 1.0f);
+#else
     const LRGB albedo = LFN(rgb_scale)(p->base_color, 1.0f - p->metallic);
+    const LINT smooth = p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA;
+#endif
     const LREAL albedo_sum = albedo.r + albedo.g + albedo.b;
-    const LINT delta = (p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA) & !(albedo_sum > 0.0f);
+    const LINT delta = smooth & !(albedo_sum > 0.0f);
     *light = WF_LANE_MASK(WF_LANE_GOES_ON, first) & !delta & LMASK(params->light_count > 0u);
 }
 #endif
