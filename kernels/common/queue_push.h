@@ -11,7 +11,10 @@
  *
  * Contract: every work-item of the group calls these functions, in the same
  * order, outside any divergent branch (they hold barriers). `scratch` is
- * WF_QUEUE_SCRATCH __local uints declared once at kernel scope. */
+ * WF_QUEUE_SCRATCH __local uints declared once at kernel scope. They are
+ * always inlined: left static functions with their barriers (a GPU's
+ * program, WF_STATIC_FUNCTIONS), they crashed PoCL 3.1's compiler on the
+ * megakernel (--kernels gpu --integrator megakernel on a CPU device). */
 #ifndef WF_QUEUE_PUSH_H
 #define WF_QUEUE_PUSH_H
 
@@ -32,7 +35,7 @@
 
 /* Adds `amount` from each work-item to `*counter`; returns the value of the
  * counter where this work-item's share starts. */
-WF_INLINE uint group_atomic_add(volatile __global uint* counter, uint amount, __local uint* scratch) {
+WF_FORCE_INLINE uint group_atomic_add(volatile __global uint* counter, uint amount, __local uint* scratch) {
 #if WF_QUEUE_PUSH == WF_PUSH_ATOMIC
     return amount ? atomic_add(counter, amount) : 0u;
 #elif WF_QUEUE_PUSH == WF_PUSH_SCAN
@@ -62,7 +65,7 @@ WF_INLINE uint group_atomic_add(volatile __global uint* counter, uint amount, __
 }
 
 /* Appends `slot` to queue `queue` when `push` holds. */
-WF_INLINE void queue_push(__global uint* queues, volatile __global uint* counters, uint pool_size,
+WF_FORCE_INLINE void queue_push(__global uint* queues, volatile __global uint* counters, uint pool_size,
                        uint queue, uint slot, bool push, __local uint* scratch) {
     const uint at = group_atomic_add(&counters[queue], push ? 1u : 0u, scratch);
     if (push) queues[queue * pool_size + at] = slot;
@@ -70,7 +73,7 @@ WF_INLINE void queue_push(__global uint* queues, volatile __global uint* counter
 
 /* Appends each of slot[0 .. count) whose next[i] is `queue`: queue_push for
  * a work-item with several slots (geometry/trace_width.h). */
-WF_INLINE void queue_push_each(__global uint* queues, volatile __global uint* counters, uint pool_size, uint queue,
+WF_FORCE_INLINE void queue_push_each(__global uint* queues, volatile __global uint* counters, uint pool_size, uint queue,
                                const uint* slot, const uint* next, uint count, __local uint* scratch) {
     uint pushed = 0u;
     for (uint i = 0; i < count; ++i) pushed += next[i] == queue ? 1u : 0u;
@@ -82,7 +85,7 @@ WF_INLINE void queue_push_each(__global uint* queues, volatile __global uint* co
 /* Adds 1 to counters[bucket] for each work-item with `count` set. `histogram`
  * is `buckets` __local uints declared once at kernel scope; the work-group must
  * have at least `buckets` work-items. */
-WF_INLINE void group_histogram_add(volatile __global uint* counters, uint buckets, uint bucket, bool count,
+WF_FORCE_INLINE void group_histogram_add(volatile __global uint* counters, uint buckets, uint bucket, bool count,
                                 __local uint* histogram) {
     const uint lid = get_local_id(0);
     if (lid < buckets) histogram[lid] = 0u;

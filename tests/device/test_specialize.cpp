@@ -95,9 +95,6 @@ void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera&
     settings.spp = 4;
     settings.seed = 5;
     settings.integrator = integrator;
-    // PoCL 3.1 fails to compile the megakernel's work-group queue push in a
-    // GPU's program ("Could not find a dominating alternative variable").
-    if (integrator == Integrator::Megakernel) settings.queue_push = QueuePush::Atomic;
     settings.kernels = KernelKind::Cpu;
     const RenderOutput cpu = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
     settings.kernels = KernelKind::Gpu;
