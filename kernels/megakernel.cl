@@ -1,12 +1,13 @@
 /* megakernel.cl — the same path tracer as wavefront.cl, in one kernel: each
- * work-item takes its slot's next sample through the stage functions in turn
- * (start_camera_sample, intersect_path, shade_path, trace_shadow_ray,
- * roulette_path, accumulate_path), each returning the queue of the stage that
- * comes next (wavefront/stage_graph.h), until the path is finished, then adds
- * it to its pixel. The functions and their order along a path are the wavefront's, and
- * the path state lives in the same arrays, so the two integrators give the
- * same bytes; what differs is only how work is grouped into launches (Laine,
- * Karras and Aila, "Megakernels Considered Harmful", HPG 2013). */
+ * work-item takes its slot's next sample through the stage list
+ * (wavefront/stage_graph.h) in turn, each stage's step (stages/stage_step.h)
+ * taking the path from the queue that stage consumes and returning the queue
+ * it goes to next, until accumulate has added it to its pixel. The functions
+ * and their order along a path are the wavefront's, and the path state lives
+ * in the same arrays, so the two integrators give the same bytes; what
+ * differs is only how work is grouped into launches (Laine, Karras and Aila,
+ * "Megakernels Considered Harmful", HPG 2013). A stage added to the list is
+ * walked here without a line of this file. */
 #include "kernel_params.h"
 #include "common/queue_push.h"
 #include "stages/generate.h"
@@ -22,33 +23,26 @@ __kernel void megakernel(WF_STAGE_PARAMS) {
     __local uint scratch[WF_QUEUE_SCRATCH];
     __local uint histogram[WF_PATH_LENGTH_BUCKETS];
     const uint slot = get_global_id(0);
-    const bool started = slot < params.pool_size && start_camera_sample(&path, &params, &camera, slot);
-    uint closest_rays = 0u, shadow_rays = 0u;
-    bool nonfinite = false;
-    if (started) {
-        /* The wavefront's queues, one path at a time: where it goes next. */
-        for (uint queue = WF_QUEUE_EXTEND; queue != WF_QUEUE_FINISHED;) {
-            switch (queue) {
-            case WF_QUEUE_EXTEND:
-                intersect_path(&path, slot, &scene);
-                ++closest_rays;
-                queue = shade_path(&path, &params, slot, &scene, &film);
-                break;
-            case WF_QUEUE_SHADOW:
-                ++shadow_rays;
-                queue = trace_shadow_ray(&path, &params, slot, &scene, &film);
-                break;
-            default: /* WF_QUEUE_CONTINUE */
-                queue = roulette_path(&path, &params, slot);
-                break;
-            }
-        }
-        nonfinite = accumulate_path(&path, &params, slot, &film);
+    const StageView view = {&path, &params, &camera, &scene, &film};
+    StageTally tally = {0u, 0u, 0u, 0u};
+    /* The wavefront's queues, one path at a time: each pass of the list
+     * moves the path through every stage that takes it where it stands, in
+     * the list's order, which is the order along a path; accumulate frees
+     * the slot (REGENERATE), and a slot without a sample left starts none
+     * (WF_QUEUE_COUNT). */
+    uint queue = slot < params.pool_size ? WF_QUEUE_REGENERATE : WF_QUEUE_COUNT;
+    while (queue != WF_QUEUE_COUNT) {
+#define WF_MEGAKERNEL_STEP(stage, kernel, consumed) \
+        if (queue == WF_QUEUE_##consumed) queue = kernel##_step(&view, slot, &tally);
+        WF_STAGES(WF_MEGAKERNEL_STEP)
+#undef WF_MEGAKERNEL_STEP
+        if (queue == WF_QUEUE_REGENERATE) break; /* accumulated */
     }
     /* Counted once per work-group, outside the divergent loop (the adds hold barriers). */
-    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
-    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
-    group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite ? 1u : 0u, scratch);
+    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], tally.closest_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], tally.shadow_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_NONFINITE], tally.nonfinite, scratch);
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS,
-                        path_length_bucket(started ? path_depth(&path, slot) : 0u), started, histogram);
+                        path_length_bucket(tally.started ? path_depth(&path, slot) : 0u), tally.started != 0u,
+                        histogram);
 }

@@ -27,9 +27,10 @@
 enum QueueId { WF_QUEUES(WF_QUEUE_ENUM) WF_QUEUE_COUNT };
 #undef WF_QUEUE_ENUM
 
-/* The stages along a path, each a kernel of wavefront.cl that takes the slots
- * of one queue and returns each to the queue that comes next; intersect and
- * shade both take the extension queue, one after the other.
+/* The stages along a path, in its order, each a kernel of wavefront.cl that
+ * takes the slots of one queue and returns each to the queue that comes next;
+ * intersect and shade both take the extension queue, one after the other.
+ * The megakernel walks a path through them in this order (stages/stage_step.h).
  *   X(STAGE, kernel_name, QUEUE it consumes) */
 #define WF_STAGES(X)                          \
     X(GENERATE, generate, REGENERATE)         \

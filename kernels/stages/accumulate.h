@@ -15,6 +15,7 @@
 #include "film_view.h"
 #include "common/finite.h"
 #include "common/film_add.h"
+#include "stages/stage_step.h"
 
 /* Adds the slot's finished sample to its pixel; returns whether it was
  * dropped as non-finite. */
@@ -27,6 +28,12 @@ WF_INLINE bool accumulate_path(const PathState* path, const RenderParams* params
     film_add(film->sum_squares, film->squares_compensation, pixel, x * x);
     film->samples[pixel] += 1u;
     return nonfinite;
+}
+
+/* The sample into its pixel; the slot is free for its next. */
+WF_FORCE_INLINE uint accumulate_step(const StageView* v, uint slot, StageTally* t) {
+    t->nonfinite += accumulate_path(v->path, v->params, slot, v->film) ? 1u : 0u;
+    return WF_QUEUE_REGENERATE;
 }
 
 /* The path-length histogram's bucket for a path of `bounces` bounces. */

@@ -12,6 +12,7 @@
 #include "path_view.h"
 #include "wavefront/scene_types.h"
 #include "common/sample_values.h"
+#include "stages/stage_step.h"
 
 WF_INLINE bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
                                 uint slot) {
@@ -33,6 +34,13 @@ WF_INLINE bool start_camera_sample(PathState* path, const RenderParams* params, 
     set_path_throughput(path, slot, (float3)(1.0f), 0u); /* no bounce yet */
     start_path_radiance(path, slot, work + 1u);
     return true;
+}
+
+/* The slot's next camera sample into the extension queue, if it has one left. */
+WF_FORCE_INLINE uint generate_step(const StageView* v, uint slot, StageTally* t) {
+    if (!start_camera_sample(v->path, v->params, v->camera, slot)) return WF_QUEUE_COUNT;
+    ++t->started;
+    return WF_QUEUE_EXTEND;
 }
 
 #endif

@@ -10,6 +10,7 @@
 #include "scene_view.h"
 #include "geometry/bvh_traverse.h"
 #include "geometry/bvh_packet.h"
+#include "stages/stage_step.h"
 
 /* The closest hits of slot[0 .. count), count from 1 to WF_TRACE_SLOTS. */
 WF_INLINE void intersect_paths(PathState* path, const uint* slot, uint count, const Scene* scene) {
@@ -35,5 +36,12 @@ WF_INLINE void intersect_paths(PathState* path, const uint* slot, uint count, co
 }
 
 WF_INLINE void intersect_path(PathState* path, uint slot, const Scene* scene) { intersect_paths(path, &slot, 1u, scene); }
+
+/* The closest hit, for shade, which takes the extension queue next. */
+WF_FORCE_INLINE uint intersect_step(const StageView* v, uint slot, StageTally* t) {
+    intersect_path(v->path, slot, v->scene);
+    ++t->closest_rays;
+    return WF_QUEUE_EXTEND;
+}
 
 #endif

@@ -12,6 +12,7 @@
 #include "film_view.h"
 #include "geometry/bvh_traverse.h"
 #include "common/bounce_layers.h"
+#include "stages/stage_step.h"
 
 /* Traces the shadow segments of slot[0 .. count), count from 1 to
  * WF_TRACE_WIDTH, and adds the light of each that nothing blocks; next[i]
@@ -42,6 +43,11 @@ WF_INLINE uint trace_shadow_ray(PathState* path, const RenderParams* params, uin
     uint next;
     trace_shadow_rays(path, params, &slot, 1u, scene, film, &next);
     return next;
+}
+
+WF_FORCE_INLINE uint intersect_shadow_step(const StageView* v, uint slot, StageTally* t) {
+    ++t->shadow_rays;
+    return trace_shadow_ray(v->path, v->params, slot, v->scene, v->film);
 }
 
 #endif

@@ -11,6 +11,7 @@
 #include "wavefront/compat.h"
 #include "wavefront/stage_graph.h"
 #include "path_view.h"
+#include "stages/stage_step.h"
 
 /* Returns the queue the path goes to next: extension if it survives. */
 WF_INLINE uint roulette_path(PathState* path, const RenderParams* params, uint slot) {
@@ -25,6 +26,11 @@ WF_INLINE uint roulette_path(PathState* path, const RenderParams* params, uint s
     if (!(path_roulette_number(path, slot) < q)) return WF_QUEUE_FINISHED;
     set_path_throughput(path, slot, throughput / q, depth);
     return WF_QUEUE_EXTEND;
+}
+
+WF_FORCE_INLINE uint roulette_step(const StageView* v, uint slot, StageTally* t) {
+    (void)t;
+    return roulette_path(v->path, v->params, slot);
 }
 
 #endif

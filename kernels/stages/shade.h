@@ -33,6 +33,7 @@
 #include "common/sample_values.h"
 #include "materials/surface_material.h"
 #include "bsdf/kinds.h"
+#include "stages/stage_step.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
 #include "geometry/triangle_blocks.h"
@@ -335,6 +336,11 @@ WF_GPU_INLINE uint shade_path(PathState* path, const RenderParams* params, uint 
     shade_shadow_ray(path, params, slot, &c);
     const BsdfAnswer a = bsdf_core(&c.query);
     return shade_scatter(path, params, slot, &c, &a);
+}
+
+WF_FORCE_INLINE uint shade_step(const StageView* v, uint slot, StageTally* t) {
+    (void)t;
+    return shade_path(v->path, v->params, slot, v->scene, v->film);
 }
 
 #endif
