@@ -3,14 +3,14 @@
 // (kernels/bsdf/kind_probe.cl): the whole BSDF core of one shading point (the
 // BSDF at a light sample's direction, and a sampled continuation) for 4M
 // random queries on opaque materials (the Cornell box's white and a rough
-// gold; with --layered, ToyCar's: a clear coat over a dielectric, and a red
+// gold; with --coated, ToyCar's: a clear coat over a dielectric, and a red
 // sheen over a rough dielectric; with --glass, the Cornell glass sphere's
 // smooth solid and a rough one, seen from outside and inside), four ways: the
 // general BSDF, and the layered kind at widths 1, 8 and 16, each built with
 // the lobes such a scene's program has. Prints each one's rate, and checks
 // the lanes give width 1's bits.
 //
-// Usage: build/bench/wavefront_bsdf_lanes [--layered | --glass] [--device SPEC]
+// Usage: build/bench/wavefront_bsdf_lanes [--coated | --glass] [--device SPEC]
 
 #include <algorithm>
 #include <cmath>
@@ -30,14 +30,14 @@ namespace {
 // coat's, sheen's and transmission's left 0 here, then wo, wi, u), and answers.
 constexpr int kParams = 18, kFields = kParams + 9, kAnswer = 12;
 
-enum class Materials { Opaque, Layered, Glass };
+enum class Materials { Opaque, Coated, Glass };
 
 // The Cornell box's white (a rough dielectric over its base) and a rough gold
-// metal, alternately, at random wo (above the surface), wi and u; layered:
+// metal, alternately, at random wo (above the surface), wi and u; coated:
 // ToyCar's coated body and sheened fabric instead; glass: a clear smooth
 // solid and one of roughness 0.3, wo on either side.
 std::vector<float> random_queries(size_t n, Materials materials) {
-    const bool layered = materials == Materials::Layered, glass = materials == Materials::Glass;
+    const bool coated = materials == Materials::Coated, glass = materials == Materials::Glass;
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     std::normal_distribution<float> normal;
@@ -49,7 +49,7 @@ std::vector<float> random_queries(size_t n, Materials materials) {
         const float params[7] = {gold ? 1.0f : 0.0f, gold ? 0.5f : 1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f};
         for (int k = 0; k < 3; ++k) set(k, i, base[k]);
         for (int k = 0; k < 7; ++k) set(3 + k, i, params[k]); // metallic, roughness, specular, its colour, ior
-        if (layered) {
+        if (coated) {
             // The body: a clear coat of roughness 0.05 over a glossy dielectric; the fabric:
             // a red sheen of roughness 0.5 over a rough dark dielectric.
             const float body[3] = {0.6f, 0.1f, 0.1f}, fabric[3] = {0.15f, 0.15f, 0.15f};
@@ -79,14 +79,14 @@ int main(int argc, char** argv) {
     Materials materials = Materials::Opaque;
     std::string spec = "cpu";
     for (int a = 1; a < argc; ++a) {
-        if (std::strcmp(argv[a], "--layered") == 0) {
-            materials = Materials::Layered;
+        if (std::strcmp(argv[a], "--coated") == 0) {
+            materials = Materials::Coated;
         } else if (std::strcmp(argv[a], "--glass") == 0) {
             materials = Materials::Glass;
         } else if (std::strcmp(argv[a], "--device") == 0 && a + 1 < argc) {
             spec = argv[++a];
         } else {
-            std::fprintf(stderr, "wavefront_bsdf_lanes: unknown argument %s; usage: [--layered | --glass] [--device SPEC]\n",
+            std::fprintf(stderr, "wavefront_bsdf_lanes: unknown argument %s; usage: [--coated | --glass] [--device SPEC]\n",
                          argv[a]);
             return 2;
         }

@@ -25,8 +25,10 @@
 #ifndef WF_HAS_ENVIRONMENT
 #define WF_HAS_ENVIRONMENT 1
 #endif
-/* The BSDF's lobes beyond the base and its interface's reflection (bsdf/bsdf.h):
- * KHR_materials_transmission, KHR_materials_clearcoat and KHR_materials_sheen. */
+/* The BSDF kind's lobes beyond the base and its interface's reflection
+ * (bsdf/kinds/layered.inc, bsdf/lobes/): KHR_materials_transmission,
+ * KHR_materials_clearcoat and KHR_materials_sheen. The general BSDF
+ * (bsdf/bsdf.h) also leaves out the clear coat and sheen where theirs is 0. */
 #ifndef WF_HAS_TRANSMISSION
 #define WF_HAS_TRANSMISSION 1
 #endif

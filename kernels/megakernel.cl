@@ -7,7 +7,7 @@
  * in the same arrays, so the two integrators give the same bytes; what
  * differs is only how work is grouped into launches (Laine, Karras and Aila,
  * "Megakernels Considered Harmful", HPG 2013). A stage added to the list is
- * walked here without a line of this file. */
+ * walked here once its header is included below. */
 #include "kernel_params.h"
 #include "common/queue_push.h"
 #include "stages/generate.h"

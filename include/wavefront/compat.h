@@ -16,7 +16,8 @@
  * OpenCL lacks: bit i set where lane i is true. On the device these are the
  * OpenCL built-ins; on the host they map onto GLM, <cmath> and <cstring>, and
  * float8 onto an array computed lane by lane: the same IEEE operations, so the
- * same bits. WF_FORCE_INLINE and WF_PREFETCH serve the traversal's inner loop.
+ * same bits. WF_FORCE_INLINE and WF_PREFETCH serve the traversal's inner loop
+ * (and WF_FORCE_INLINE the kernels' barrier-holding helpers and stage steps).
  * Nothing else belongs here. */
 #ifndef WAVEFRONT_COMPAT_H
 #define WAVEFRONT_COMPAT_H
@@ -33,7 +34,9 @@ typedef int int32_t;
  * a GPU's linker rejects (bench/gpu_isa.py links each program for AMD GPUs);
  * static fixes that, but made PoCL's renders 10-32% slower, its inliner then
  * leaving large functions as calls. WF_FORCE_INLINE serves the traversal's
- * inner loop, which PoCL's inliner otherwise leaves as calls. WF_GPU_INLINE
+ * inner loop, which PoCL's inliner otherwise leaves as calls, and the
+ * functions that hold barriers (common/queue_push.h) or only pass a step on
+ * (stages/stage_step.h). WF_GPU_INLINE
  * serves the stages' large steps, which take the kernel's views (path state,
  * scene, parameters) by pointer: a GPU's compiler left as a call keeps those
  * views in scratch memory (up to 984 bytes a lane on gfx90a), so a GPU's

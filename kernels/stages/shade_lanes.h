@@ -1,5 +1,5 @@
 /* shade_lanes.h — the lane path of shade (stages/shade.h), for the group
- * schedule: the shading points of a work-group whose BSDF kind has lanes,
+ * schedule: the shading points of a work-group,
  * gathered into a structure of arrays in local memory (shade_lanes_put, one
  * path a work-item, after shade_surface), their light sample, BSDF core and
  * scatter run WF_LANE_WIDTH at a time by the width-generic code
@@ -8,13 +8,16 @@
  * back (shade_lanes_get) for write_scatter. The light sample is taken in
  * lanes where every light is an emissive triangle whose emission is its
  * material's factor (WF_LIGHTS_IN_LANES), else by shade_light a path at a
- * time. Where no texture shapes a surface and every material has lanes
- * (WF_SURFACE_IN_LANES), every hit is put right after its arrival
+ * time. Where no texture shapes a surface and no material has a coat or
+ * sheen (WF_SURFACE_IN_LANES), every hit is put right after its arrival
  * (shade_lanes_put_arrival) and the lanes also find its surface
  * (stages/surface.inc) and draw its numbers; the emission it found comes
  * back with its scatter (shade_lanes_emission). Its answers are width 1's to the bit
  * (tests/kernels/test_bsdf_kinds.cpp, tests/integrator/test_determinism.cpp),
- * so the group schedule makes the megakernel's bytes. Device only. */
+ * so the group schedule makes the megakernel's bytes. The functions that take
+ * the lanes' local memory are WF_GPU_INLINE: left as calls in a GPU's program
+ * (--kernels gpu --lane-width 8 on PoCL 3.1), every path ended at its first
+ * hit. Device only. */
 #ifndef WF_SHADE_LANES_H
 #define WF_SHADE_LANES_H
 
@@ -88,18 +91,18 @@ enum LaneField {
 
 #define WF_LANE_AT(soa, field, at) (soa)[(field) * WF_LANE_CAPACITY + (at)]
 
-WF_INLINE void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
+WF_GPU_INLINE void lanes_put3(__local float* soa, uint field, uint at, float3 v) {
     WF_LANE_AT(soa, field, at) = v.x;
     WF_LANE_AT(soa, field + 1, at) = v.y;
     WF_LANE_AT(soa, field + 2, at) = v.z;
 }
 
-WF_INLINE float3 lanes_get3(__local const float* soa, uint field, uint at) {
+WF_GPU_INLINE float3 lanes_get3(__local const float* soa, uint field, uint at) {
     return (float3)(WF_LANE_AT(soa, field, at), WF_LANE_AT(soa, field + 1, at), WF_LANE_AT(soa, field + 2, at));
 }
 
 /* A light sample (shade_light's), for the lanes that do not take their own. */
-WF_INLINE void lanes_put_light(__local float* soa, uint at, const LightSample* light) {
+WF_GPU_INLINE void lanes_put_light(__local float* soa, uint at, const LightSample* light) {
     lanes_put3(soa, WF_LANE_LIGHT_WI, at, light->wi);
     lanes_put3(soa, WF_LANE_LIGHT_RADIANCE, at, light->radiance);
     WF_LANE_AT(soa, WF_LANE_LIGHT_PDF, at) = light->pdf;
@@ -110,7 +113,7 @@ WF_INLINE void lanes_put_light(__local float* soa, uint at, const LightSample* l
     lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, light->normal);
 }
 
-WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
+WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
     const BsdfQuery* q = &c->query;
 #define WF_PUT_REAL(name, has) \
     if (has) WF_LANE_AT(soa, WF_LANE_PARAM_##name, at) = q->params.name;
@@ -146,7 +149,7 @@ WF_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* 
 /* A path that hit, as path_arrival found it, and its numbers where
  * arrival_numbers drew them (else the lanes draw them: shade_lanes_numbers):
  * the lanes find its surface. */
-WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a, bool numbers) {
+WF_GPU_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a, bool numbers) {
     WF_LANE_AT(soa, WF_LANE_TRIANGLE, at) = as_float(a->triangle);
     WF_LANE_AT(soa, WF_LANE_HIT, at) = a->t;
     WF_LANE_AT(soa, WF_LANE_HIT + 1, at) = a->b1;
@@ -170,7 +173,7 @@ WF_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arriva
 /* The emission the lanes found for the path put at `at`, added to it as
  * shade_surface adds it; returns whether the path goes on (then its scatter
  * waits in the lanes: shade_lanes_get). */
-WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
+WF_GPU_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
                                     const FilmBuffers* film, uint slot) {
     if (WF_LANE_AT(soa, WF_LANE_EMITS, at) != 0.0f)
         add_radiance(path, params, film, slot, as_uint(WF_LANE_AT(soa, WF_LANE_PIXEL, at)),
@@ -179,7 +182,7 @@ WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState
 }
 #else
 /* Where shade_surface added the emission, and put only paths that go on. */
-WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
+WF_GPU_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState* path, const RenderParams* params,
                                     const FilmBuffers* film, uint slot) {
     return true;
 }
@@ -187,7 +190,7 @@ WF_INLINE bool shade_lanes_emission(__local const float* soa, uint at, PathState
 
 /* The scatter of the path put at `at`, as scatter_x1 gives it, its shadow
  * ray, and its roulette number. */
-WF_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* roulette_u, ShadowRay_x1* shadow_ray) {
+WF_GPU_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, float* roulette_u, ShadowRay_x1* shadow_ray) {
     *roulette_u = WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at);
     shadow_ray->origin = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_ORIGIN, at));
     shadow_ray->segment = vec_from_float3(lanes_get3(soa, WF_LANE_SHADOW_SEGMENT, at));
@@ -232,7 +235,7 @@ WF_INLINE bool lanes_draw_numbers(const RenderParams* params) { return params->s
 /* arrival_numbers for the arrivals put at [first, first + WF_LANE_WIDTH), as
  * the independent sampler draws them: the light's group and the BSDF's. A path
  * that ends here, or one in a scene without lights, ignores what it gets. */
-WF_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params) {
+WF_GPU_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params) {
     const LUINT pixel = LASUINT(WF_LANE_LOAD(WF_LANE_PIXEL, first));
     const LUINT sample = LASUINT(WF_LANE_LOAD(WF_LANE_SAMPLE, first));
     const LUINT depth = LASUINT(WF_LANE_LOAD(WF_LANE_DEPTH, first));
@@ -249,7 +252,7 @@ WF_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderP
  * shade_lanes_emission), the material's factors, the frame and wo (on the
  * side the ray arrived from, but a solid's, which keeps its front), and
  * whether the path takes a light sample (bsdf_is_delta's rule for this kind). */
-WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderParams* params, const Scene* scene,
+WF_GPU_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderParams* params, const Scene* scene,
                                    LFN(LayeredParams) * p, LVEC* wo, LFN(ScatterSurface) * s, LINT* light) {
     const LINT triangle = LASINT(WF_LANE_LOAD(WF_LANE_TRIANGLE, first));
     const LREAL t = WF_LANE_LOAD(WF_LANE_HIT, first);
@@ -296,7 +299,7 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
     s->frame_z = LFN(facing)(g.normal, g.geometric_normal);
 #if WF_HAS_TRANSMISSION
     /* A solid keeps its front side as +z (shade_surface's rule): wo.z < 0 from inside. */
-    const LINT flip = p->transmission > 0.0f && !(p->thin_walled != 0.0f) && !g.front_face;
+    const LINT flip = LFN(layered_solid)(p) && !g.front_face;
     s->frame_z = LFN(vec_sel)(flip, LFN(vec_scale)(s->frame_z, -1.0f), s->frame_z);
     s->geometric_normal = LFN(vec_sel)(flip, LFN(vec_scale)(s->geometric_normal, -1.0f), s->geometric_normal);
 #endif
@@ -304,15 +307,9 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
     *wo = LFN(vec_in_frame)(LFN(vec_scale)(direction, -1.0f), s->frame_x, s->frame_y, s->frame_z);
 
     /* bsdf_is_delta: a smooth interface over no diffuse albedo. */
-#if WF_HAS_TRANSMISSION
-    const LRGB albedo = LFN(rgb_scale)(p->base_color, (1.0f - p->metallic) * (1.0f - p->transmission));
-    const LINT smooth = p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA || (p->transmission > 0.0f && p->ior == 1.0f);
-#else
-    const LRGB albedo = LFN(rgb_scale)(p->base_color, 1.0f - p->metallic);
-    const LINT smooth = p->roughness * p->roughness < WF_BSDF_DELTA_ALPHA;
-#endif
+    const LRGB albedo = LFN(rgb_scale)(p->base_color, LFN(layered_layer_share)(p));
     const LREAL albedo_sum = albedo.r + albedo.g + albedo.b;
-    const LINT delta = smooth & !(albedo_sum > 0.0f);
+    const LINT delta = LFN(layered_smooth)(p) & !(albedo_sum > 0.0f);
     *light = WF_LANE_MASK(WF_LANE_GOES_ON, first) & !delta & LMASK(params->light_count > 0u);
 }
 #endif
@@ -322,7 +319,7 @@ WF_INLINE void shade_lanes_surface(__local float* soa, uint first, const RenderP
  * it, the BSDF core and the scatter. A run that ends past the last path first
  * repeats its first path's inputs into the empty lanes, so that no lane reads
  * what nobody wrote. */
-WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, const RenderParams* params,
+WF_GPU_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, const RenderParams* params,
                                const Scene* scene) {
     for (uint at = length; at < first + WF_LANE_WIDTH; ++at)
         for (uint f = 0; f < WF_LANE_INPUTS; ++f) WF_LANE_AT(soa, f, at) = WF_LANE_AT(soa, f, first);
@@ -330,6 +327,9 @@ WF_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, cons
     LVEC wo;
     LFN(ScatterSurface) s;
     LFN(ScatterLight) l;
+#if WF_GLASS_TABLE_IN_SCENE
+    p.glass_table = scene->glass_albedo; /* a GPU's program with lanes (--kernels gpu --lane-width 8) */
+#endif
 #if WF_SURFACE_IN_LANES
     if (lanes_draw_numbers(params)) shade_lanes_numbers(soa, first, params);
     shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);

@@ -90,11 +90,15 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
 // functions, lanes of one path, and the glass table read from the scene, not
 // from the constant bank. The same floats in the same order: the same bits.
 void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera& camera, const std::string& what,
-                                          Integrator integrator) {
+                                          Integrator integrator, uint32_t lane_width = 0) {
     RenderSettings settings;
     settings.spp = 4;
     settings.seed = 5;
     settings.integrator = integrator;
+    if (lane_width != 0) { // a GPU's program with the group schedule's lanes, which read the glass table too
+        settings.schedule = Schedule::Group;
+        settings.lane_width = lane_width;
+    }
     settings.kernels = KernelKind::Cpu;
     const RenderOutput cpu = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
     settings.kernels = KernelKind::Gpu;
@@ -117,11 +121,12 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
     }
     glass.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
+    const SceneCamera glass_camera = test::camera_looking({0, 0, 3.5f}, {0, 0, -1}, {0, 1, 0}, 0.7f);
     for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
-        expect_gpu_kernels_equal_cpu_kernels(glass, test::camera_looking({0, 0, 3.5f}, {0, 0, -1}, {0, 1, 0}, 0.7f),
-                                             "rough glass ball", integrator);
+        expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball", integrator);
         expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", integrator);
     }
+    expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball, 8 lanes", Integrator::Wavefront, 8);
 }
 
 // The GPU's short stack, shrunk to one group (WF_KERNEL_OPTIONS is appended to
