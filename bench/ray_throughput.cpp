@@ -239,7 +239,9 @@ void write_json(const std::string& path, const Report& r) {
 }
 
 int run(const Options& options) {
-    const Scene scene = load_gltf(options.scene);
+    // Every placement written out, one tree on both sides: the hits are
+    // compared with Embree's triangle by triangle.
+    const Scene scene = load_gltf(options.scene, LoadOptions{-1, false});
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
     const OpenClDevice device = open_device(options.device);
     check_shared_layouts(device);

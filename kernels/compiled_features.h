@@ -38,6 +38,13 @@
 #ifndef WF_HAS_SHEEN
 #define WF_HAS_SHEEN 1
 #endif
+/* Shared meshes placed by instances: a two-level BVH (host/bvh/instance_bvh.h).
+ * Not a feature the generic program may have on, but the layout of the
+ * scene's buffers, so the host sets it from the scene always, and a build
+ * without it has one level. */
+#ifndef WF_HAS_INSTANCES
+#define WF_HAS_INSTANCES 0
+#endif
 /* The BSDF kinds (wavefront/bsdf_kinds.h): WF_HAS_BSDF_<KIND>. */
 #ifndef WF_HAS_BSDF_LAYERED
 #define WF_HAS_BSDF_LAYERED 1

@@ -8,6 +8,7 @@
 
 #include "wavefront/compat.h"
 #include "wavefront/path_state.h"
+#include "compiled_features.h"
 #include "wavefront/render_params.h"
 #include "wavefront/stage_graph.h"
 #include "geometry/trace_width.h"
@@ -39,6 +40,16 @@ WF_INLINE float path_roulette_number(const PathState* path, uint slot) { return 
 WF_INLINE void set_path_hit(PathState* path, uint slot, float t, float u, float v, int triangle) {
     path->hit[slot] = (float4)(t, u, v, as_float(triangle));
 }
+#if WF_HAS_INSTANCES
+/* The closest hit's placement (a two-level tree's) rides in the shadow
+ * segment's w, free between the shadow ray and the next one: intersect
+ * writes it after the path's last shadow ray is traced (a path waits in one
+ * queue at a time), shade reads it before it sets the next. */
+WF_INLINE void set_path_hit_instance(PathState* path, uint slot, int instance) {
+    path->shadow_segment[slot].w = as_float(instance);
+}
+WF_INLINE int path_hit_instance(const PathState* path, uint slot) { return as_int(path->shadow_segment[slot].w); }
+#endif
 /* The light a pending shadow ray delivers if nothing blocks it, the bounce
  * layer it joins, and whether the path goes on after it. */
 WF_INLINE void set_shadow_light(PathState* path, uint slot, float3 radiance, uint layer, bool then_continue) {

@@ -80,7 +80,7 @@ struct SahSplit {
 
 class Builder {
 public:
-    explicit Builder(const std::vector<glm::vec3>& positions);
+    explicit Builder(std::vector<PrimRef> prims) : prims_(std::move(prims)) {}
     BinaryBvh build();
 
 private:
@@ -95,7 +95,8 @@ private:
     BinaryBvh bvh_;
 };
 
-Builder::Builder(const std::vector<glm::vec3>& positions) {
+// The triangles' boxes, checked.
+std::vector<PrimRef> triangle_prims(const std::vector<glm::vec3>& positions) {
     if (positions.empty()) throw std::invalid_argument("build_bvh: no triangles");
     if (positions.size() % 3 != 0)
         throw std::invalid_argument("build_bvh: " + std::to_string(positions.size()) +
@@ -104,7 +105,7 @@ Builder::Builder(const std::vector<glm::vec3>& positions) {
     if (count > size_t{WF_BVH_FIRST_MASK} + 1)
         throw std::invalid_argument("build_bvh: " + std::to_string(count) +
                                     " triangles exceed what a leaf's child word can index");
-    prims_.resize(count);
+    std::vector<PrimRef> prims(count);
     for (size_t t = 0; t < count; ++t) {
         Bounds b;
         for (int corner = 0; corner < 3; ++corner) {
@@ -114,8 +115,9 @@ Builder::Builder(const std::vector<glm::vec3>& positions) {
                                             " has a corner that is not finite");
             b.grow(p);
         }
-        prims_[t] = PrimRef{b, b.center(), static_cast<uint32_t>(t)};
+        prims[t] = PrimRef{b, b.center(), static_cast<uint32_t>(t)};
     }
+    return prims;
 }
 
 BinaryBvh Builder::build() {
@@ -235,6 +237,21 @@ double half_area(const Bounds& b) {
     return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions) { return Builder(positions).build(); }
+BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions) {
+    return Builder(triangle_prims(positions)).build();
+}
+
+BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes) {
+    if (boxes.empty()) throw std::invalid_argument("build_bvh: no boxes");
+    std::vector<PrimRef> prims(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        const Bounds& b = boxes[i];
+        const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        if (b.empty() || !finite(b.lo) || !finite(b.hi))
+            throw std::invalid_argument("build_bvh: box " + std::to_string(i) + " is empty or not finite");
+        prims[i] = PrimRef{b, b.center(), static_cast<uint32_t>(i)};
+    }
+    return Builder(std::move(prims)).build();
+}
 
 } // namespace wf

@@ -40,6 +40,11 @@ struct BinaryBvh {
 // there are more triangles than a leaf's child word can index (2^28).
 BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions);
 
+// The same over boxes (the placements of a two-level tree,
+// host/bvh/instance_bvh.h), order indexing `boxes`; throws where there are
+// none or one is empty or not finite.
+BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes);
+
 // Half the surface area, which SAH weighs by; in double, where the products of
 // float extents cannot overflow. 0 for an empty box.
 double half_area(const Bounds& b);

@@ -80,7 +80,6 @@ public:
         bvh_.nodes.emplace_back();
         fill(0, {0u}, WF_BVH_STACK_SIZE, 1);
         bvh_.order = std::move(binary_.order);
-        place_leaves_in_blocks(bvh_);
         return std::move(bvh_);
     }
 
@@ -159,6 +158,12 @@ private:
 
 } // namespace
 
-Bvh build_bvh(const std::vector<glm::vec3>& positions) { return Collapser(build_binary_bvh(positions)).build(); }
+Bvh build_bvh(const std::vector<glm::vec3>& positions) {
+    Bvh bvh = Collapser(build_binary_bvh(positions)).build();
+    place_leaves_in_blocks(bvh);
+    return bvh;
+}
+
+Bvh build_box_bvh(const std::vector<Bounds>& boxes) { return Collapser(build_binary_bvh(boxes)).build(); }
 
 } // namespace wf

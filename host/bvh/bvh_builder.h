@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/scene.h"
 #include "wavefront/scene_types.h"
 
 namespace wf {
@@ -28,10 +29,17 @@ struct Bvh {
     std::vector<BvhNode> nodes;  // node 0 holds the scene's box over the top of the tree
     std::vector<uint32_t> order; // order[i] = the scene triangle at BVH position i, or kNoTriangle
     int depth = 0;               // deepest level of nodes (root = 1)
+    // A two-level tree's placements (host/bvh/instance_bvh.h), which its top
+    // tree's leaves index; empty for a tree of world-space triangles.
+    std::vector<Instance> instances;
 };
 
 // positions: three corners per triangle (world space); throws as
 // build_binary_bvh (host/bvh/binary_bvh.h) does.
 Bvh build_bvh(const std::vector<glm::vec3>& positions);
+
+// The same tree over boxes, as a two-level tree's top (instance_bvh.h): its
+// leaves are runs of `order`, which indexes `boxes`, not placed in blocks.
+Bvh build_box_bvh(const std::vector<Bounds>& boxes);
 
 } // namespace wf

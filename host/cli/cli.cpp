@@ -297,6 +297,10 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->needs(env)
         ->group(sampling);
     add_cache_dir(render, o.cache_dir);
+    render.add_flag_function("--no-instancing", [&o](int64_t) { o.instancing = false; },
+                    with_default("Write out every placement of a mesh that several nodes place, one tree of "
+                                 "world-space triangles, instead of keeping the mesh once under a tree of its "
+                                 "instances", "off"));
     render.add_flag_function("--no-specialize", [&s](int64_t) { s.specialize = false; },
                     with_default("Compile the generic kernels, every feature on, instead of those for the scene's "
                                  "features", "off"));

@@ -72,10 +72,14 @@ int serve_units(const RenderOptions& options) {
         const ImageSize size = resolve_image_size(options.width, options.height, scene.camera);
         devices = open_devices(options.device);
         const RenderSettings settings = device_settings(options, &install_interrupt_handlers());
-        const SceneBuild build(scene);
+        std::vector<const OpenClDevice*> chosen;
+        for (const OpenClDevice& d : devices) chosen.push_back(&d);
+        std::optional<Scene> flat;
+        const Scene& rendered = scene_for_devices(scene, chosen, settings, flat);
+        const SceneBuild build(rendered);
         const SceneCamera camera = scene.camera ? *scene.camera : frame_bounds(scene.bounds());
         for (const OpenClDevice& d : devices)
-            renderers.push_back(std::make_unique<DeviceRenderer>(d, scene, build, camera, size, settings));
+            renderers.push_back(std::make_unique<DeviceRenderer>(d, rendered, build, camera, size, settings));
         image = renderers[0]->film_state(); // zeroes, as every device's film is
         setup.scene_contents = file_fingerprint(options.scene);
         setup.width = size.width;

@@ -74,6 +74,7 @@ double environment_power(const EnvironmentMap& map, double scene_radius) {
 DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
     DeviceSceneData d;
     d.nodes = bvh.nodes;
+    d.instances = bvh.instances;
     const size_t n = bvh.order.size(); // a multiple of WF_BLOCK_LANES
     d.triangles.resize(n / WF_BLOCK_LANES);
     d.normals.resize(n);

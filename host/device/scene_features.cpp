@@ -23,7 +23,8 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
             {f.environment, {"WF_HAS_ENVIRONMENT", "environment"}},
             {f.transmission, {"WF_HAS_TRANSMISSION", "transmission"}},
             {f.clearcoat, {"WF_HAS_CLEARCOAT", "clear coat"}},
-            {f.sheen, {"WF_HAS_SHEEN", "sheen"}}};
+            {f.sheen, {"WF_HAS_SHEEN", "sheen"}},
+            {f.instances, {"WF_HAS_INSTANCES", "instances"}}};
 #undef WF_BSDF_KIND_FEATURE
 }
 

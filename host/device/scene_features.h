@@ -26,6 +26,10 @@ struct SceneFeatures {
     bool transmission = true;       // any material transmits (KHR_materials_transmission)
     bool clearcoat = true;          // any material has a clear coat (KHR_materials_clearcoat)
     bool sheen = true;              // any material has a sheen (KHR_materials_sheen)
+    // Shared meshes placed by instances: a two-level BVH (host/bvh/instance_bvh.h).
+    // Not a choice but the layout of the scene's buffers, so set from the
+    // scene even where every other feature is on (build_render_program).
+    bool instances = false;
     // Which BSDF kinds its materials have (host/device/bsdf_kind_choice.h), by WF_BSDF_*.
     std::array<bool, WF_BSDF_KIND_COUNT> bsdf_kinds = filled(true);
 

@@ -270,6 +270,31 @@ std::vector<glm::vec4> read_colors(const Model& model, int index, size_t vertex_
     return colors;
 }
 
+std::vector<glm::dvec4> read_rotations(const Model& model, int index, size_t count, const std::string& where) {
+    const Accessor& accessor = find_accessor(model, index, where, "ROTATION");
+    const std::string what = accessor_name(index, "ROTATION");
+    const int type = accessor.componentType;
+    const double scale = type == TINYGLTF_COMPONENT_TYPE_FLOAT ? 1.0
+                         : type == TINYGLTF_COMPONENT_TYPE_BYTE  ? 1.0 / 127.0
+                         : type == TINYGLTF_COMPONENT_TYPE_SHORT ? 1.0 / 32767.0
+                                                                 : 0.0;
+    if (accessor.type != TINYGLTF_TYPE_VEC4 || scale == 0.0 || (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !accessor.normalized))
+        fail(where, what + " must be VEC4 of FLOAT or of normalized BYTE or SHORT, not " + describe_format(accessor));
+    if (accessor.count != count)
+        fail(where, what + " has " + std::to_string(accessor.count) + " elements but the others have " +
+                        std::to_string(count));
+    const std::vector<double> values = read_accessor(model, accessor, where, what);
+    std::vector<glm::dvec4> rotations(count);
+    for (size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < 4; ++c) rotations[i][c] = std::max(values[4 * i + c] * scale, -1.0);
+        const double length = glm::length(rotations[i]);
+        if (!(length > 0.0) || !std::isfinite(length))
+            fail(where, what + ": rotation " + std::to_string(i) + " has no direction");
+        rotations[i] /= length;
+    }
+    return rotations;
+}
+
 std::vector<glm::vec4> read_tangents(const Model& model, int index, size_t vertex_count, const std::string& where) {
     const Accessor& accessor = find_accessor(model, index, where, "TANGENT");
     const std::string what = accessor_name(index, "TANGENT");

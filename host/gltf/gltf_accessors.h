@@ -38,6 +38,11 @@ std::vector<glm::vec4> read_colors(const tinygltf::Model& model, int index, size
 std::vector<glm::vec4> read_tangents(const tinygltf::Model& model, int index, size_t vertex_count,
                                      const std::string& where);
 
+// EXT_mesh_gpu_instancing's ROTATION: unit quaternions (x, y, z, w), VEC4 of
+// FLOAT or of normalized BYTE or SHORT, `count` of them; one of length 0 is an error.
+std::vector<glm::dvec4> read_rotations(const tinygltf::Model& model, int index, size_t count,
+                                       const std::string& where);
+
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& where);
 
 void check_finite(const std::vector<glm::vec3>& positions, const std::string& where);

@@ -18,9 +18,9 @@
 // together.
 #include "gltf/gltf_loader.h"
 
-#include <map>
-
+#include <algorithm>
 #include <array>
+#include <map>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -36,7 +36,7 @@
 #include "gltf/gltf_meshes.h"
 #include "gltf/gltf_nodes.h"
 #include "gltf/gltf_textures.h"
-#include "scene/tangents.h"
+#include "scene/mesh_placement.h"
 
 namespace wf {
 namespace {
@@ -53,6 +53,7 @@ public:
         check_core_features(model_, scene_.warnings);
         convert_materials();
         walk_nodes();
+        place_meshes(options.instancing);
         if (scene_.triangle_count() == 0) fail(path_, "the scene has no triangles");
         scene_.punctual_lights = punctual_lights(model_, visited_, path_);
         scene_.camera = choose_camera(options);
@@ -64,6 +65,13 @@ private:
     struct PlacedCamera {
         size_t camera;
         glm::dmat4 world;
+    };
+
+    // A mesh a node places, with the node's world matrix.
+    struct Placement {
+        size_t mesh;
+        glm::dmat4 world;
+        std::string where; // the node, for messages
     };
 
     // Scene::materials mirrors the file's materials index for index; the
@@ -165,7 +173,14 @@ private:
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail(where, "mesh " + std::to_string(node.mesh) + " does not exist");
-            instance(size_t(node.mesh), world, where);
+            const std::vector<glm::dmat4> instances = mesh_instances(model_, node, where);
+            if (instances.empty()) placements_.push_back({size_t(node.mesh), world, where});
+            for (size_t i = 0; i < instances.size(); ++i) { // EXT_mesh_gpu_instancing: each its own placement
+                const std::string at = where + ": instance " + std::to_string(i);
+                const glm::dmat4 placed = world * instances[i];
+                check_float_range(placed, at, "transform");
+                placements_.push_back({size_t(node.mesh), placed, at});
+            }
         }
         if (node.camera >= 0) {
             if (size_t(node.camera) >= model_.cameras.size())
@@ -175,52 +190,57 @@ private:
         return world;
     }
 
-    // Appends one instance of a mesh in world space. A mirroring transform
-    // swaps two corners so counter-clockwise stays the front face; normals go
-    // through the inverse transpose, and fall back to the geometric normal
-    // where the file has none or they do not survive the transform. A
-    // transform that carries a finite vertex past float range is an error.
-    void instance(size_t mesh_index, const glm::dmat4& world, const std::string& node_where) {
-        const MeshTriangles& mesh = mesh_triangles(mesh_index);
-        const glm::dmat3 linear(world);
-        const glm::dmat3 normal_matrix = glm::inverseTranspose(linear);
-        const bool mirrored = glm::determinant(linear) < 0.0;
-        const std::array<size_t, 3> order = mirrored
-                                                ? std::array<size_t, 3>{0, 2, 1}
-                                                : std::array<size_t, 3>{0, 1, 2};
-        for (size_t triangle = 0; triangle < mesh.materials.size(); ++triangle) {
-            std::array<glm::dvec3, 3> p;
-            for (size_t k = 0; k < 3; ++k)
-                p[k] = glm::dvec3(world * glm::dvec4(mesh.positions[3 * triangle + order[k]], 1.0));
-            // A quarter of float range, so that the BVH's centroids (a sum of
-            // three corners) and bounds extents (a difference of two) stay
-            // finite: past it the builder computed inf * 0 (found by fuzzing).
-            constexpr double kMaxCoordinate = double(std::numeric_limits<float>::max()) / 4.0;
-            for (size_t k = 0; k < 3; ++k)
-                if (!glm::all(glm::lessThanEqual(glm::abs(p[k]), glm::dvec3(kMaxCoordinate))))
-                    fail(node_where + ": " + label("mesh", mesh_index, model_.meshes[mesh_index].name),
-                         "vertex " + std::to_string(3 * triangle + order[k]) +
-                             " leaves float range (a quarter of FLT_MAX) after the node transform");
-            // Degenerate triangles stay (later stages handle them) with any unit normal.
-            const glm::dvec3 geometric =
-                direction_of(glm::cross(p[1] - p[0], p[2] - p[0])).value_or(glm::dvec3(0, 0, 1));
-            for (size_t k = 0; k < 3; ++k) {
-                const size_t corner = 3 * triangle + order[k];
-                const glm::dvec3 normal = normal_matrix * glm::dvec3(mesh.normals[corner]);
-                const glm::vec3 unit_normal(direction_of(normal).value_or(geometric));
-                scene_.positions.push_back(glm::vec3(p[k]));
-                scene_.normals.push_back(unit_normal);
-                scene_.uv0.push_back(mesh.uv0[corner]);
-                scene_.uv1.push_back(mesh.uv1[corner]);
-                scene_.colors.push_back(mesh.colors[corner]);
-                // Tangents move with the surface (not the inverse transpose);
-                // a mirroring transform flips the handedness.
-                const glm::vec4 t = mesh.tangents[corner];
-                scene_.tangents.push_back(orthogonal_tangent(unit_normal, glm::vec3(linear * glm::dvec3(t)),
-                                                             mirrored ? -t.w : t.w));
-            }
-            scene_.triangle_material.push_back(mesh.materials[triangle]);
-            scene_.triangle_mesh.push_back(mesh.name_index);
+    // Appends one placement of a mesh in world space (scene/mesh_placement.h).
+    // A transform that carries a finite vertex past float range is an error.
+    void flatten(const Placement& placed) {
+        const MeshTriangles& mesh = mesh_triangles(placed.mesh);
+        for (size_t corner = 0; corner < mesh.positions.size(); ++corner) {
+            const glm::dvec3 p(placed.world * glm::dvec4(mesh.positions[corner], 1.0));
+            if (!glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxCoordinate))))
+                fail(placed.where + ": " + label("mesh", placed.mesh, model_.meshes[placed.mesh].name),
+                     "vertex " + std::to_string(corner) +
+                         " leaves float range (a quarter of FLT_MAX) after the node transform");
+        }
+        place_mesh(mesh, placed.world, scene_);
+    }
+
+    // Whether a placement can be an instance of a shared mesh: a transform
+    // the kernels can invert, and a mesh that emits nothing (each placement
+    // of an emitter is a light of its own) and stays in float range.
+    bool can_share(const Placement& placed) {
+        const MeshTriangles& mesh = mesh_triangles(placed.mesh);
+        if (mesh.materials.empty()) return false;
+        for (uint32_t material : mesh.materials)
+            if (scene_.materials[material].emits()) return false;
+        const double det = glm::determinant(glm::dmat3(placed.world));
+        if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
+        const glm::dmat4 inverse = glm::inverse(placed.world);
+        for (int column = 0; column < 4; ++column)
+            if (!glm::all(glm::lessThanEqual(glm::abs(inverse[column]), glm::dvec4(kMaxCoordinate)))) return false;
+        Bounds box;
+        for (const glm::vec3& p : mesh.positions) box.grow(p);
+        const Bounds placed_box = transformed_bounds(box, placed.world);
+        return glm::all(glm::lessThanEqual(glm::abs(placed_box.lo), glm::vec3(float(kMaxCoordinate)))) &&
+               glm::all(glm::lessThanEqual(glm::abs(placed_box.hi), glm::vec3(float(kMaxCoordinate))));
+    }
+
+    // The meshes placed: in world space, each where it is placed, but for a
+    // mesh placed by several nodes, which is kept once after them and placed
+    // by instances (LoadOptions::instancing).
+    void place_meshes(bool instancing) {
+        std::vector<std::vector<size_t>> shared(model_.meshes.size()); // placements, by mesh
+        for (size_t i = 0; i < placements_.size(); ++i)
+            if (instancing && can_share(placements_[i])) shared[placements_[i].mesh].push_back(i);
+        for (size_t i = 0; i < placements_.size(); ++i) {
+            const std::vector<size_t>& mine = shared[placements_[i].mesh];
+            if (mine.size() < 2 || std::find(mine.begin(), mine.end(), i) == mine.end()) flatten(placements_[i]);
+        }
+        for (size_t mesh = 0; mesh < shared.size(); ++mesh) {
+            if (shared[mesh].size() < 2) continue;
+            const uint32_t index = uint32_t(scene_.shared_meshes.size());
+            scene_.shared_meshes.push_back({uint32_t(scene_.triangle_count()), uint32_t(mesh_triangles(mesh).materials.size())});
+            place_mesh(mesh_triangles(mesh), glm::dmat4(1.0), scene_);
+            for (size_t i : shared[mesh]) scene_.instances.push_back({index, placements_[i].world});
         }
     }
 
@@ -283,6 +303,7 @@ private:
     std::vector<std::optional<MeshTriangles>> meshes_; // by glTF mesh index, built on first use
     std::optional<uint32_t> default_material_;
     std::vector<PlacedCamera> cameras_; // in the order the node walk met them
+    std::vector<Placement> placements_; // the meshes placed, in the order the node walk met them
     std::vector<NodeWorld> visited_;    // every node the walk reached, for its lights
 };
 

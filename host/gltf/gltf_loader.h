@@ -17,6 +17,9 @@ namespace wf {
 
 struct LoadOptions {
     int camera_index = -1; // -1: the first perspective camera in the file, if any
+    // A mesh that several nodes place is kept once and placed by instances
+    // (Scene::shared_meshes); false writes every placement out in world space.
+    bool instancing = true;
 };
 
 // Loads a .gltf or .glb. Throws InputError with a one-line message that names

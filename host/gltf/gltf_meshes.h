@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/mesh_placement.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -43,18 +44,6 @@ struct SkippedElements {
         add_part(primitives_without_position, "primitives without POSITION");
         return parts.empty() ? parts : parts + " skipped";
     }
-};
-
-// One glTF mesh's triangles in the mesh's own space, built once however many
-// nodes instance it.
-struct MeshTriangles {
-    std::vector<glm::vec3> positions; // three per triangle
-    std::vector<glm::vec3> normals;   // three per triangle; zero where the file has none
-    std::vector<glm::vec2> uv0, uv1;  // three per triangle; zero where the file has none
-    std::vector<glm::vec4> tangents;  // three per triangle; the file's, or generated (tangents.h)
-    std::vector<glm::vec4> colors;    // three per triangle; COLOR_0, white where the file has none
-    std::vector<uint32_t> materials;  // one per triangle, index into Scene::materials
-    uint32_t name_index = 0;          // into Scene::mesh_names
 };
 
 // The scene's material index for a primitive's glTF material (-1: none); the

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gltf/gltf_accessors.h"
 #include "gltf/gltf_diagnostics.h"
 #include "gltf/gltf_float.h"
 
@@ -43,6 +44,44 @@ glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where)
         for (int row = 0; row < 4; ++row)
             if (!std::isfinite(transform[column][row])) fail(where, "transform is not finite");
     return transform;
+}
+
+std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinygltf::Node& node,
+                                       const std::string& where) {
+    const auto extension = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (extension == node.extensions.end()) return {};
+    const std::string at = where + ": EXT_mesh_gpu_instancing";
+    const tinygltf::Value& attributes = extension->second.Get("attributes");
+    if (!attributes.IsObject()) fail(at, "has no attributes");
+    const auto accessor_of = [&](const char* name) {
+        const tinygltf::Value& v = attributes.Get(name);
+        return v.IsNumber() ? v.GetNumberAsInt() : -1;
+    };
+    const int translation = accessor_of("TRANSLATION"), rotation = accessor_of("ROTATION"),
+              scale = accessor_of("SCALE");
+    std::vector<glm::vec3> translations, scales;
+    if (translation >= 0) translations = read_vec3_attribute(model, translation, at, "TRANSLATION");
+    if (scale >= 0) scales = read_vec3_attribute(model, scale, at, "SCALE");
+    const size_t count = translation >= 0 ? translations.size()
+                         : scale >= 0     ? scales.size()
+                         : rotation >= 0  ? find_accessor(model, rotation, at, "ROTATION").count
+                                          : 0;
+    if (count == 0) fail(at, "names none of TRANSLATION, ROTATION and SCALE");
+    if ((translation >= 0 && translations.size() != count) || (scale >= 0 && scales.size() != count))
+        fail(at, "TRANSLATION and SCALE differ in count");
+    const std::vector<glm::dvec4> rotations =
+        rotation >= 0 ? read_rotations(model, rotation, count, at) : std::vector<glm::dvec4>();
+    std::vector<glm::dmat4> transforms(count, glm::dmat4(1.0));
+    for (size_t i = 0; i < count; ++i) {
+        glm::dmat4& m = transforms[i];
+        if (translation >= 0) m = glm::translate(m, glm::dvec3(translations[i]));
+        if (rotation >= 0) {
+            const glm::dvec4& q = rotations[i]; // x, y, z, w; glm's constructor takes w first
+            m *= glm::mat4_cast(glm::dquat(q.w, q.x, q.y, q.z));
+        }
+        if (scale >= 0) m = glm::scale(m, glm::dvec3(scales[i]));
+    }
+    return transforms;
 }
 
 SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& world,

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
@@ -23,6 +24,13 @@ struct NodeWorld {
 // The node's matrix, or its translation, rotation and scale; an InputError
 // naming `where` when an array has the wrong length or the result is not finite.
 glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where);
+
+// EXT_mesh_gpu_instancing: the transforms (TRANSLATION, ROTATION, SCALE) of
+// the node's mesh's instances, each applied before the node's own; none where
+// the node lacks the extension. An InputError naming `where` for accessors
+// that disagree in count or format.
+std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinygltf::Node& node,
+                                       const std::string& where);
 
 // glTF cameras look down their local -Z with +Y up.
 SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& world, const std::string& where);

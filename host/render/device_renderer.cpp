@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "base/errors.h"
+#include "bvh/instance_bvh.h"
 #include "device/layout_check.h"
 #include "integrator/megakernel_integrator.h"
 #include "integrator/path_pool.h"
@@ -47,10 +48,6 @@ unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings, bo
     return device.native_float_width >= 8 && !gpu_kernels ? 8u : 1u;
 }
 
-// Kernels for a GPU, or for a CPU: as asked, else the device's kind.
-bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
-    return settings.kernels == KernelKind::Auto ? device.type != "cpu" : settings.kernels == KernelKind::Gpu;
-}
 
 // Rays a work-item traces at once (kernels/geometry/trace_width.h): as asked,
 // else two on a CPU where the scene's triangle blocks alone are more than the
@@ -65,6 +62,18 @@ uint32_t trace_width(const DeviceInfo& device, const Scene& scene, const RenderS
 }
 
 } // namespace
+
+bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
+    return settings.kernels == KernelKind::Auto ? device.type != "cpu" : settings.kernels == KernelKind::Gpu;
+}
+
+const Scene& scene_for_devices(const Scene& scene, const std::vector<const OpenClDevice*>& devices,
+                               const RenderSettings& settings, std::optional<Scene>& flat) {
+    if (scene.instances.empty()) return scene;
+    for (const OpenClDevice* device : devices)
+        if (gpu_kernels(device->info, settings)) return *(flat = flattened(scene));
+    return scene;
+}
 
 RenderProgramSource render_program_source(const DeviceInfo& device, const SceneFeatures& features,
                                           const RenderSettings& settings) {
@@ -95,7 +104,8 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
 
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
                                    std::string* features_described) {
-    const SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    SceneFeatures features = settings.specialize ? scene_features(scene) : SceneFeatures::all();
+    features.instances = !scene.instances.empty();
     RenderSettings resolved = settings;
     resolved.trace_width = trace_width(device.info, scene, settings);
     if (features_described)
@@ -109,7 +119,7 @@ KernelProgram build_render_program(const OpenClDevice& device, const Scene& scen
 
 SceneBuild::SceneBuild(const Scene& scene) {
     const auto start = std::chrono::steady_clock::now();
-    bvh = build_bvh(scene.positions);
+    bvh = build_scene_bvh(scene);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     data = make_device_scene_data(scene, bvh);
 }

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "bvh/bvh_builder.h"
 #include "device/device_scene.h"
@@ -36,6 +38,16 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
 // if one is set. `features_described`, if given, receives what was compiled in.
 KernelProgram build_render_program(const OpenClDevice& device, const Scene& scene, const RenderSettings& settings,
                                    std::string* features_described = nullptr);
+
+// Kernels for a GPU, or for a CPU: as asked, else the device's kind.
+bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings);
+
+// The scene the devices render: `scene`, or where one of them gets a GPU's
+// kernels, whose traversal walks one tree (kernels/geometry/bvh_traverse.h),
+// `scene` with its instances written out in world space, kept in `flat`.
+// Every device renders the same, so that they make the same bytes.
+const Scene& scene_for_devices(const Scene& scene, const std::vector<const OpenClDevice*>& devices,
+                               const RenderSettings& settings, std::optional<Scene>& flat);
 
 // What is built once on the host for every device: the BVH and the buffers' contents.
 struct SceneBuild {

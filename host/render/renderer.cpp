@@ -28,9 +28,11 @@ Renderer::Renderer(const OpenClDevice& device, const Scene& scene, const SceneCa
 Renderer::Renderer(const std::vector<const OpenClDevice*>& devices, const Scene& scene, const SceneCamera& camera,
                    ImageSize size, const RenderSettings& settings)
     : size_(size), stop_(settings.stop) {
-    const SceneBuild build(scene);
+    std::optional<Scene> flat;
+    const Scene& rendered = scene_for_devices(scene, devices, settings, flat);
+    const SceneBuild build(rendered);
     for (const OpenClDevice* device : devices)
-        devices_.push_back(std::make_unique<DeviceRenderer>(*device, scene, build, camera, size, settings));
+        devices_.push_back(std::make_unique<DeviceRenderer>(*device, rendered, build, camera, size, settings));
     add_workers({});
 }
 

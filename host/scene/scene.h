@@ -76,8 +76,24 @@ struct Bounds {
     glm::vec3 extent() const { return hi - lo; }
 };
 
+// A mesh that several nodes place, kept once: Scene's triangles [first,
+// first + count), in the mesh's own space, which each MeshInstance maps to
+// the world. Such meshes never emit (the loader flattens those: each
+// placement of an emitter is a light of its own).
+struct SharedMesh {
+    uint32_t first = 0;
+    uint32_t count = 0;
+};
+
+// One placement of a shared mesh: object space to world space, invertible.
+struct MeshInstance {
+    uint32_t mesh = 0; // index into Scene::shared_meshes
+    glm::dmat4 object_to_world{1.0}; // as the loader found it, in double
+};
+
 struct Scene {
-    // Three entries per triangle, counter-clockwise seen from the front face.
+    // Three entries per triangle, counter-clockwise seen from the front face:
+    // in world space, but for the shared meshes' triangles, which come last.
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals; // shading normals, per corner; never empty beside positions
     // Per corner like normals when loaded from glTF (zero where the file has
@@ -96,8 +112,23 @@ struct Scene {
     TextureSet textures; // what SceneMaterial::textures index
     std::optional<SceneCamera> camera;
     std::vector<std::string> warnings; // each said once, e.g. "mesh 'x': 12 points skipped"
+    // Meshes kept once and placed by instances (a two-level BVH,
+    // host/bvh/instance_bvh.h); both empty when every triangle is in world space.
+    std::vector<SharedMesh> shared_meshes; // in triangle order, after every world-space triangle
+    std::vector<MeshInstance> instances;
 
     size_t triangle_count() const { return triangle_material.size(); }
+    // The triangles in world space: all of them, but for the shared meshes'.
+    size_t world_triangle_count() const {
+        return shared_meshes.empty() ? triangle_count() : size_t{shared_meshes.front().first};
+    }
+    // The triangles as placed: one per world-space triangle and one per
+    // instance of a shared mesh's.
+    size_t placed_triangle_count() const {
+        size_t placed = world_triangle_count();
+        for (const MeshInstance& instance : instances) placed += shared_meshes[instance.mesh].count;
+        return placed;
+    }
     // The one answer to "is there an emitter": a triangle whose material emits.
     bool has_emissive_triangles() const {
         for (uint32_t material : triangle_material)
@@ -127,11 +158,20 @@ struct Scene {
             if (c != glm::vec4(1.0f)) return true;
         return false;
     }
-    Bounds bounds() const {
-        Bounds b;
-        for (const glm::vec3& p : positions) b.grow(p);
-        return b;
-    }
+    // Of every placed triangle (instance_bvh.cpp: a shared mesh's box, placed).
+    Bounds bounds() const;
 };
+
+// The box of the scene's triangles [first, first + count), in their own space.
+Bounds triangle_bounds(const Scene& scene, size_t first, size_t count);
+
+// `box` mapped by `transform`: the box of its eight corners mapped, in double,
+// rounded outward to float.
+Bounds transformed_bounds(const Bounds& box, const glm::dmat4& transform);
+
+// The scene with every instance of a shared mesh written out in world space,
+// as the loader writes a mesh placed once: for devices whose traversal has
+// one level (a GPU's), and for comparing the two.
+Scene flattened(const Scene& scene);
 
 } // namespace wf

@@ -30,8 +30,10 @@ void warm_cache(const CacheOptions& options, std::ostream& out) {
     for (const std::string& path : options.scenes) {
         Scene scene = load_gltf(path);
         light_unlit_scene(scene);
+        std::optional<Scene> flat;
+        const Scene& rendered = scene_for_devices(scene, {&device}, settings, flat);
         std::string features;
-        const KernelProgram program = build_render_program(device, scene, settings, &features);
+        const KernelProgram program = build_render_program(device, rendered, settings, &features);
         out << path << ": " << features << ": " << (program.from_cache ? "already cached" : "compiled") << " in "
             << program.build_seconds << " s\n";
     }

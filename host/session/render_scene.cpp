@@ -46,7 +46,7 @@ void ready_for_render(Scene& scene, const RenderOptions& options, std::ostream& 
 }
 
 Scene load_render_scene(const RenderOptions& options, std::ostream& log) {
-    Scene scene = load_gltf(options.scene, LoadOptions{options.camera});
+    Scene scene = load_gltf(options.scene, LoadOptions{options.camera, options.instancing});
     ready_for_render(scene, options, log);
     return scene;
 }

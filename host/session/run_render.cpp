@@ -68,7 +68,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     // Before anything is read or written: a render that cannot be denoised is not begun.
     if (options.denoise) denoiser_library();
     check_outputs(options, hooks.write_image);
-    Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera});
+    Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera, options.instancing});
     ready_for_render(scene, options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";

@@ -8,10 +8,11 @@
 #define WF_LAYOUT_STRUCTS(X) \
     X(BvhNode) X(TriangleBlock) X(TriangleNormals) X(Material) X(LightEntry) X(Camera) X(RenderParams) \
     X(Environment) X(PunctualLight) X(TextureInfo) X(TextureRef) X(MaterialTextureParams)  \
-    X(TriangleTexcoords) X(TriangleTangents) X(TriangleColors)
+    X(TriangleTexcoords) X(TriangleTangents) X(TriangleColors) X(Instance)
 
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, bounds) X(BvhNode, child)                                                           \
+    X(Instance, object_to_world) X(Instance, world_to_object) X(Instance, root) X(Instance, handedness) \
     X(TriangleBlock, corners) X(TriangleBlock, light) X(TriangleBlock, material) X(TriangleBlock, pad) \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
     X(TriangleTexcoords, uv0) X(TriangleTexcoords, uv1)                                           \

@@ -29,7 +29,7 @@
     X(float4, throughput, "rgb: path throughput; w: bounces so far, 0 for a camera ray, as bits") \
     X(float4, radiance, "rgb: radiance gathered so far; w: samples the slot has started, as bits") \
     X(float4, shadow_origin, "xyz: shadow ray origin")                               \
-    X(float4, shadow_segment, "xyz: vector to the light point; visible when no hit in (0, 1)") \
+    X(float4, shadow_segment, "xyz: vector to the light point; visible when no hit in (0, 1); w: the closest hit's placement as bits, where the scene has instances") \
     X(float4, shadow_radiance, "rgb: added to radiance when the shadow ray is unoccluded; w: bounce layer | WF_SHADOW_THEN_CONTINUE, as bits")
 
 #endif /* WAVEFRONT_PATH_STATE_H */

@@ -14,6 +14,7 @@
 
 #define WF_SCENE_BUFFERS(X)                                                                           \
     X(BvhNode, nodes, "the 8-wide BVH; node 0 holds the scene's box")                                 \
+    X(Instance, instances, "a two-level BVH's placements of shared meshes; empty without")           \
     X(TriangleBlock, triangles, "corners, light entry and material, four triangles a block, in BVH order")\
     X(TriangleNormals, normals, "shading normals per corner, in BVH order")                           \
     X(Material, materials, "glTF factors, one per material")                                          \

@@ -28,6 +28,20 @@ typedef struct BvhNode {
     uint32_t child[WF_BVH_WIDTH];
 } BvhNode;
 
+/* A placement of a shared mesh (host/bvh/instance_bvh.h). In a two-level
+ * tree, node 0 holds the box of every placement over the top tree, whose
+ * leaves are runs of placements, [first, first + count) of this buffer; each
+ * placement's `root` holds its mesh's box over that mesh's own tree, as node 0
+ * holds the scene's, in the mesh's space. The maps are 3x4 matrices, row r
+ * giving coordinate r as m[r][0] x + m[r][1] y + m[r][2] z + m[r][3]. */
+typedef struct Instance {
+    float object_to_world[3][4];
+    float world_to_object[3][4];
+    uint32_t root;
+    float handedness; /* -1 where the map mirrors: a tangent's w times this; else 1 */
+    uint32_t pad[2];
+} Instance;
+
 /* Four triangles side by side, BVH positions 4b to 4b + 3 in block b, a lane
  * each (kernels/geometry/triangle_blocks.h reads one triangle back). corners
  * row 3c + axis holds corner c's x, y or z of the four, so a ray's leaf test

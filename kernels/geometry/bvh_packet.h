@@ -41,7 +41,8 @@
 #include "wavefront/compat.h"
 #include "geometry/bvh_traverse.h"
 
-#if !WF_GPU_TRAVERSAL
+/* Packets walk one tree: a two-level tree's rays go one by one. */
+#if !WF_GPU_TRAVERSAL && !WF_TWO_LEVEL
 #define WF_PACKET_RAYS 8
 /* Fewer rays than this go one by one: a packet's tests cost eight lanes. */
 #ifndef WF_PACKET_MIN_RAYS
@@ -208,7 +209,7 @@ WF_FORCE_INLINE TriangleLanes_x8 packet_triangle(const PacketRay* ray, WF_GLOBAL
 
 /* The closest hit in (0, t_max) of each of the packet's rays, into hit[0 .. count). */
 WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
-                                       const Packet* p, uint32_t count, float t_max WF_HIT_FILTER_PARAM,
+                                       const Packet* p, uint32_t count, float t_max WF_TRAVERSAL_SCENE_PARAM,
                                        RayHit* hit) {
     HitSelection selection[WF_PACKET_RAYS];
     float window[WF_PACKET_RAYS]; /* selection[i].window_end, side by side for the lanes' loads */
@@ -238,7 +239,7 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
                     for (; found != 0u; found &= found - 1u) {
                         const uint32_t r = lowest_bit(found);
                         if (!WF_HIT_PASSES(triangles, (int32_t)position, &hits[r])) continue;
-                        select_hit(&selection[r], &hits[r], (int32_t)position, b->light[lane] >= 0);
+                        select_hit(&selection[r], &hits[r], (int32_t)position, -1, b->light[lane] >= 0);
                         window[r] = selection[r].window_end;
                         found_any = 1;
                     }
@@ -247,7 +248,7 @@ WF_INLINE void bvh_closest_hits_packet(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL
                 for (uint32_t m = lanes; m != 0u; m &= m - 1u) {
                     const uint32_t r = lowest_bit(m);
                     const WatertightRay ray = packet_lane_ray(p, r);
-                    leaf_hits(&ray, triangles, first, end, t_max, &selection[r], 0 WF_HIT_FILTER_ARG);
+                    leaf_hits(&ray, triangles, first, end, -1, t_max, &selection[r], 0 WF_TRAVERSAL_SCENE_ARG);
                     window[r] = selection[r].window_end;
                 }
                 found_any = 1;

@@ -110,19 +110,37 @@
 #include "geometry/triangle_blocks.h"
 #include "geometry/trace_width.h"
 
+/* What a query reads beyond the nodes and triangles: on the device the
+ * scene, for its alpha masks and, in a two-level tree (WF_TWO_LEVEL), its
+ * placements; on the host the placements alone, or none (null) for a tree of
+ * one level, which is the default of the entry points at the end. */
 #ifdef __OPENCL_C_VERSION__
 #include "materials/alpha_mask.h"
-#define WF_HIT_FILTER_PARAM , const HitFilter* filter
-#define WF_HIT_FILTER_ARG , filter
+#define WF_TRAVERSAL_SCENE_PARAM , const HitFilter* filter
+#define WF_TRAVERSAL_SCENE_ARG , filter
+#define WF_TRAVERSAL_SCENE_PARAM_OR_NONE WF_TRAVERSAL_SCENE_PARAM
 #define WF_HIT_PASSES(triangles, i, hit) hit_passes_filter(filter, triangles, i, (hit)->u, (hit)->v)
+#define WF_PLACEMENTS (filter->instances)
+#define WF_TWO_LEVEL WF_HAS_INSTANCES
 #else
-#define WF_HIT_FILTER_PARAM
-#define WF_HIT_FILTER_ARG
+#define WF_TRAVERSAL_SCENE_PARAM , const Instance* instances
+#define WF_TRAVERSAL_SCENE_ARG , instances
+#define WF_TRAVERSAL_SCENE_PARAM_OR_NONE , const Instance* instances = 0
 #define WF_HIT_PASSES(triangles, i, hit) 1
+#define WF_PLACEMENTS instances
+#define WF_TWO_LEVEL 1
+#endif
+#include "geometry/instance_map.h"
+
+#if WF_TWO_LEVEL && WF_GPU_TRAVERSAL
+#error "a GPU's traversal walks one tree: the host flattens a scene's instances for it (render/device_renderer.h)"
 #endif
 
-/* Pending children, pushed by a node visit that meets several; see above. */
+/* Pending children, pushed by a node visit that meets several; see above.
+ * A two-level query's stack holds the top tree's and, above them, those of
+ * the placement it is in, each tree built for the whole of WF_BVH_STACK_SIZE. */
 #define WF_BVH_STACK_SIZE 64
+#define WF_TRAVERSAL_STACK_SIZE (WF_TWO_LEVEL ? 2 * WF_BVH_STACK_SIZE : WF_BVH_STACK_SIZE)
 
 #if WF_GPU_TRAVERSAL
 /* A GPU's pending groups a ray (see above): 12 of 5 bytes for each of 64
@@ -145,6 +163,9 @@ typedef struct RayHit {
     float u; /* barycentrics as in TriangleHit */
     float v;
     int32_t triangle; /* -1 on a miss, else an index into the BVH-ordered triangles */
+#if WF_TWO_LEVEL
+    int32_t instance; /* the placement whose triangle it is (-1 in a tree of one level) */
+#endif
 } RayHit;
 
 /* A ray prepared for slab tests against boxes grown as described above. Per
@@ -231,18 +252,28 @@ WF_INLINE HitSelection no_hits(float t_max) {
     s.closest.u = 0.0f;
     s.closest.v = 0.0f;
     s.closest.triangle = -1;
+#if WF_TWO_LEVEL
+    s.closest.instance = -1;
+#endif
     s.emitter = s.closest;
     s.window_end = t_max;
     return s;
 }
 
-/* Whether a hit at t on triangle `index` comes before `than` (none yet: -1 at
- * t_max, which every hit is below): least t, then lower index. */
-WF_FORCE_INLINE int comes_before(float t, int32_t index, const RayHit* than) {
+/* Whether a hit at t on triangle `index` of placement `instance` comes
+ * before `than` (none yet: -1 at t_max, which every hit is below): least t,
+ * then lower index, then lower placement. */
+WF_FORCE_INLINE int comes_before(float t, int32_t index, int32_t instance, const RayHit* than) {
+#if WF_TWO_LEVEL
+    return t < than->t ||
+           (t == than->t && (index < than->triangle || (index == than->triangle && instance < than->instance)));
+#else
     return t < than->t || (t == than->t && index < than->triangle);
+#endif
 }
 
-WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int emitter) {
+WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t index, int32_t instance,
+                                int emitter) {
     RayHit h;
     h.t = hit->t;
 #if WF_GPU_TRAVERSAL
@@ -255,8 +286,11 @@ WF_FORCE_INLINE void select_hit(HitSelection* s, const TriangleHit* hit, int32_t
     h.v = hit->v;
 #endif
     h.triangle = index;
-    if (comes_before(h.t, index, &s->closest)) s->closest = h;
-    if (emitter && comes_before(h.t, index, &s->emitter)) s->emitter = h;
+#if WF_TWO_LEVEL
+    h.instance = instance;
+#endif
+    if (comes_before(h.t, index, instance, &s->closest)) s->closest = h;
+    if (emitter && comes_before(h.t, index, instance, &s->emitter)) s->emitter = h;
     s->window_end = min(s->window_end, hit->t + 2.0f * hit->t_error);
 }
 
@@ -326,8 +360,8 @@ WF_FORCE_INLINE uint32_t lowest_bit(uint32_t bits) { return 31u - clz(bits & (0u
  * triangles at a time, each hit handed to select_hit; returns 1 at the first
  * hit when stop_at_first_hit is set. */
 WF_FORCE_INLINE int leaf_hits(const WatertightRay* ray, WF_GLOBAL const TriangleBlock* triangles, uint32_t first,
-                              uint32_t end, float t_max, HitSelection* selection,
-                              int stop_at_first_hit WF_HIT_FILTER_PARAM) {
+                              uint32_t end, int32_t instance, float t_max, HitSelection* selection,
+                              int stop_at_first_hit WF_TRAVERSAL_SCENE_PARAM) {
     for (uint32_t block = first / WF_BLOCK_LANES; block * WF_BLOCK_LANES < end; ++block) {
         WF_GLOBAL const TriangleBlock* b = triangles + block;
         const TriangleLanes lanes = block_lanes(ray, b);
@@ -338,7 +372,7 @@ WF_FORCE_INLINE int leaf_hits(const WatertightRay* ray, WF_GLOBAL const Triangle
             const uint32_t lane = lowest_bit(found);
             const int32_t index = (int32_t)(block * WF_BLOCK_LANES + lane);
             if (!WF_HIT_PASSES(triangles, index, &hits[lane])) continue;
-            select_hit(selection, &hits[lane], index, b->light[lane] >= 0);
+            select_hit(selection, &hits[lane], index, instance, b->light[lane] >= 0);
             if (stop_at_first_hit) return 1;
         }
     }
@@ -395,6 +429,12 @@ typedef struct Traversal {
     float t_max;
     uint32_t child; /* the next child to visit */
     int stack_size;
+#if WF_TWO_LEVEL
+    float3 world_origin, world_direction; /* the ray as asked, kept while ray and box are a placement's */
+    int32_t instance;      /* the placement whose tree it is in; -1 in the top tree */
+    uint32_t instance_end; /* the end of the run of placements of the top tree's leaf it came from */
+    int instance_base;     /* the stack's size when it went into the placement's tree */
+#endif
 #if WF_GPU_TRAVERSAL
     uint32_t node; /* the node `child` was taken from (0: none yet), */
     uint32_t slot; /* and its slot there */
@@ -484,8 +524,8 @@ WF_FORCE_INLINE void rebuild_stack(Traversal* t, const TraversalStack* stack, WF
 }
 #else
 typedef struct TraversalStack {
-    uint32_t child[WF_BVH_STACK_SIZE];
-    float entry[WF_BVH_STACK_SIZE];
+    uint32_t child[WF_TRAVERSAL_STACK_SIZE];
+    float entry[WF_TRAVERSAL_STACK_SIZE];
 } TraversalStack;
 #endif
 
@@ -496,6 +536,13 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->selection = no_hits(t_max);
     t->t_max = t_max;
     t->stack_size = 0;
+#if WF_TWO_LEVEL
+    t->world_origin = origin;
+    t->world_direction = direction;
+    t->instance = -1;
+    t->instance_end = 0u;
+    t->instance_base = 0;
+#endif
 #if WF_GPU_TRAVERSAL
     t->node = 0u;
     t->slot = 0u;
@@ -505,6 +552,32 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
      * against the scene's. */
     t->child = nodes->child[0];
 }
+
+#if WF_TWO_LEVEL
+/* Goes into the tree of placement i (a leaf of the top tree holds a run of
+ * them): the ray mapped into its mesh's space, its direction not made unit,
+ * so that t along it is t along the ray as asked, and the window's end and
+ * the pending entries mean the same in both trees. Its box ray pads by the
+ * mesh's box, as the top tree's by the scene's. */
+WF_FORCE_INLINE void enter_instance(Traversal* t, WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Instance* placements,
+                                    uint32_t i) {
+    WF_GLOBAL const Instance* placement = placements + i;
+    const float3 origin = map_point(placement->world_to_object, t->world_origin);
+    const float3 direction = map_vector(placement->world_to_object, t->world_direction);
+    t->ray = watertight_ray(origin, direction);
+    t->box = box_ray(nodes + placement->root, origin, direction);
+    t->child = nodes[placement->root].child[0];
+    t->instance = (int32_t)i;
+    t->instance_base = t->stack_size;
+}
+
+/* Back in the top tree, the ray as asked. */
+WF_FORCE_INLINE void leave_instance(Traversal* t, WF_GLOBAL const BvhNode* nodes) {
+    t->ray = watertight_ray(t->world_origin, t->world_direction);
+    t->box = box_ray(nodes, t->world_origin, t->world_direction);
+    t->instance = -1;
+}
+#endif
 
 #if WF_GPU_TRAVERSAL
 /* selected_hit with the u and v that a GPU's selection leaves 0: the one
@@ -528,7 +601,7 @@ WF_INLINE RayHit traversal_hit(const Traversal* t, WF_GLOBAL const TriangleBlock
  * stop_at_first_hit is set, the first hit found. */
 WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBAL const BvhNode* nodes,
                                     WF_GLOBAL const TriangleBlock* triangles,
-                                    int stop_at_first_hit WF_HIT_FILTER_PARAM) {
+                                    int stop_at_first_hit WF_TRAVERSAL_SCENE_PARAM) {
     const uint32_t child = t->child;
     if (child & WF_BVH_LEAF) {
         const uint32_t first = child & WF_BVH_FIRST_MASK;
@@ -552,11 +625,22 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
                 t->selection.closest.triangle = (int32_t)position;
                 return 1;
             }
-            select_hit(&t->selection, &hit, (int32_t)position, b->light[lane] >= 0);
+            select_hit(&t->selection, &hit, (int32_t)position, -1, b->light[lane] >= 0);
         }
 #else
+#if WF_TWO_LEVEL
+        if (t->instance < 0 && WF_PLACEMENTS) { /* the top tree's leaf: a run of placements */
+            t->instance_end = end;
+            enter_instance(t, nodes, WF_PLACEMENTS, first);
+            return 0;
+        }
+        const int32_t instance = t->instance;
+#else
+        const int32_t instance = -1;
+#endif
         /* One or two blocks, four triangles at a time. */
-        if (leaf_hits(&t->ray, triangles, first, end, t->t_max, &t->selection, stop_at_first_hit WF_HIT_FILTER_ARG))
+        if (leaf_hits(&t->ray, triangles, first, end, instance, t->t_max, &t->selection,
+                      stop_at_first_hit WF_TRAVERSAL_SCENE_ARG))
             return 1;
 #endif
     } else {
@@ -627,10 +711,21 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
         --t->stack_size;
     take_slot(t, nodes, stack->node[top], slot);
 #else
-    do {
+    for (;;) {
+#if WF_TWO_LEVEL
+        /* A placement's tree done: the next placement of its run, or back to the top tree. */
+        if (t->instance >= 0 && t->stack_size == t->instance_base) {
+            if ((uint32_t)t->instance + 1u < t->instance_end) {
+                enter_instance(t, nodes, WF_PLACEMENTS, (uint32_t)t->instance + 1u);
+                return 0;
+            }
+            leave_instance(t, nodes);
+        }
+#endif
         if (t->stack_size == 0) return 1;
         --t->stack_size;
-    } while (stack->entry[t->stack_size] > t->selection.window_end * (1.0f + 0x1p-21f));
+        if (!(stack->entry[t->stack_size] > t->selection.window_end * (1.0f + 0x1p-21f))) break;
+    }
     t->child = stack->child[t->stack_size];
 #endif
     return 0;
@@ -640,7 +735,7 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
  * stop_at_first_hit is set. */
 WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                               float3 origin, float3 direction, float t_max,
-                              int stop_at_first_hit WF_HIT_FILTER_PARAM) {
+                              int stop_at_first_hit WF_TRAVERSAL_SCENE_PARAM_OR_NONE) {
     Traversal t;
 #if WF_GPU_TRAVERSAL
     TraversalStack stack = traversal_stack(filter, 0u);
@@ -648,7 +743,7 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
     TraversalStack stack;
 #endif
     traversal_start(&t, nodes, origin, direction, t_max);
-    while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG)) {
+    while (!traversal_step(&t, &stack, nodes, triangles, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG)) {
     }
 #if WF_GPU_TRAVERSAL
     return traversal_hit(&t, triangles);
@@ -662,7 +757,7 @@ WF_INLINE RayHit bvh_traverse(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const Tr
  * answer is too. */
 WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                                  const float3 origin[2], const float3 direction[2], float t_max,
-                                 int stop_at_first_hit WF_HIT_FILTER_PARAM, RayHit hit[2]) {
+                                 int stop_at_first_hit WF_TRAVERSAL_SCENE_PARAM, RayHit hit[2]) {
     Traversal a, b;
 #if WF_GPU_TRAVERSAL
     TraversalStack stack_a = traversal_stack(filter, 0u), stack_b = traversal_stack(filter, 1u);
@@ -673,11 +768,11 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
     traversal_start(&b, nodes, origin[1], direction[1], t_max);
     int a_done = 0, b_done = 0;
     while (!a_done && !b_done) {
-        a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
-        b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+        a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG);
+        b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG);
     }
-    while (!a_done) a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
-    while (!b_done) b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_HIT_FILTER_ARG);
+    while (!a_done) a_done = traversal_step(&a, &stack_a, nodes, triangles, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG);
+    while (!b_done) b_done = traversal_step(&b, &stack_b, nodes, triangles, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG);
 #if WF_GPU_TRAVERSAL
     hit[0] = traversal_hit(&a, triangles);
     hit[1] = traversal_hit(&b, triangles);
@@ -690,23 +785,23 @@ WF_INLINE void bvh_traverse_pair(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const
 /* bvh_traverse of `count` rays, 1 to WF_TRACE_WIDTH, into hit[0 .. count). */
 WF_INLINE void bvh_traverse_rays(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
                                  const float3* origin, const float3* direction, uint32_t count, float t_max,
-                                 int stop_at_first_hit WF_HIT_FILTER_PARAM, RayHit* hit) {
+                                 int stop_at_first_hit WF_TRAVERSAL_SCENE_PARAM, RayHit* hit) {
     if (WF_TRACE_WIDTH > 1 && count == 2u) {
-        bvh_traverse_pair(nodes, triangles, origin, direction, t_max, stop_at_first_hit WF_HIT_FILTER_ARG, hit);
+        bvh_traverse_pair(nodes, triangles, origin, direction, t_max, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG, hit);
         return;
     }
-    hit[0] = bvh_traverse(nodes, triangles, origin[0], direction[0], t_max, stop_at_first_hit WF_HIT_FILTER_ARG);
+    hit[0] = bvh_traverse(nodes, triangles, origin[0], direction[0], t_max, stop_at_first_hit WF_TRAVERSAL_SCENE_ARG);
 }
 
 WF_INLINE RayHit bvh_closest_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles,
-                                 float3 origin, float3 direction, float t_max WF_HIT_FILTER_PARAM) {
-    return bvh_traverse(nodes, triangles, origin, direction, t_max, 0 WF_HIT_FILTER_ARG);
+                                 float3 origin, float3 direction, float t_max WF_TRAVERSAL_SCENE_PARAM_OR_NONE) {
+    return bvh_traverse(nodes, triangles, origin, direction, t_max, 0 WF_TRAVERSAL_SCENE_ARG);
 }
 
 /* 1 if any triangle is hit with t in (0, t_max). */
 WF_INLINE int bvh_any_hit(WF_GLOBAL const BvhNode* nodes, WF_GLOBAL const TriangleBlock* triangles, float3 origin,
-                          float3 direction, float t_max WF_HIT_FILTER_PARAM) {
-    return bvh_traverse(nodes, triangles, origin, direction, t_max, 1 WF_HIT_FILTER_ARG).triangle >= 0;
+                          float3 direction, float t_max WF_TRAVERSAL_SCENE_PARAM_OR_NONE) {
+    return bvh_traverse(nodes, triangles, origin, direction, t_max, 1 WF_TRAVERSAL_SCENE_ARG).triangle >= 0;
 }
 
 WF_DEVICE_END

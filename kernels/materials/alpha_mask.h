@@ -26,6 +26,9 @@ WF_INLINE int hit_passes_filter(const HitFilter* scene, __global const TriangleB
     point.material = material;
     point.b1 = b1;
     point.b2 = b2;
+#if WF_HAS_INSTANCES
+    point.instance = -1; /* the mask reads no tangent */
+#endif
     return p.base_alpha * surface_texture(scene, &point, WF_TEXTURE_BASE_COLOR).w *
                surface_vertex_color(scene, &point).w >=
            p.alpha_cutoff;

@@ -11,6 +11,7 @@
 #include "materials/surface_texture.h"
 #include "materials/valid_reflection.h"
 #include "materials/vertex_color.h"
+#include "geometry/instance_map.h"
 
 /* The clear coat's weight: its factor times its texture's red. */
 WF_INLINE float surface_clearcoat(__global const Material* m, const Scene* scene, const SurfacePoint* p) {
@@ -69,7 +70,14 @@ WF_INLINE float3 surface_normal(const Scene* scene, const SurfacePoint* p, float
     const float3 in_tangent_space = (float3)((2.0f * c.x - 1.0f) * scale, (2.0f * c.y - 1.0f) * scale, 2.0f * c.z - 1.0f);
     __global const TriangleTangents* t = &scene->tangents[p->triangle];
     const float b0 = 1.0f - p->b1 - p->b2;
-    const float4 tangent = b0 * vload4(0, t->t0) + p->b1 * vload4(0, t->t1) + p->b2 * vload4(0, t->t2);
+    float4 tangent = b0 * vload4(0, t->t0) + p->b1 * vload4(0, t->t1) + p->b2 * vload4(0, t->t2);
+#if WF_HAS_INSTANCES
+    /* A placement's tangent moves with its surface, and a mirror flips its handedness. */
+    if (p->instance >= 0) {
+        __global const Instance* placement = scene->instances + p->instance;
+        tangent = (float4)(map_vector(placement->object_to_world, tangent.xyz), tangent.w * placement->handedness);
+    }
+#endif
     const float3 along = tangent.xyz - dot(tangent.xyz, n) * n;
     const float length_along = length(along);
     float3 mapped = n; /* where the tangent frame or the bent normal degenerates */

@@ -18,6 +18,9 @@ typedef struct SurfacePoint {
     uint triangle;
     uint material;
     float b1, b2;
+#if WF_HAS_INSTANCES
+    int instance; /* the placement whose triangle it is, where the normal map's tangent needs its map */
+#endif
 } SurfacePoint;
 
 WF_INLINE __global const TextureRef* texture_slot(const Scene* scene, uint material, uint slot) {

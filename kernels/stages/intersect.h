@@ -32,7 +32,12 @@ WF_INLINE void intersect_paths(PathState* path, const uint* slot, uint count, co
         for (uint i = 0; i < WF_TRACE_SLOTS && i < count; i += WF_TRACE_WIDTH)
             bvh_traverse_rays(scene->nodes, scene->triangles, origin + i, direction + i,
                               min((uint)WF_TRACE_WIDTH, count - i), INFINITY, 0, scene, hit + i);
-    for (uint i = 0; i < count; ++i) set_path_hit(path, slot[i], hit[i].t, hit[i].u, hit[i].v, hit[i].triangle);
+    for (uint i = 0; i < count; ++i) {
+        set_path_hit(path, slot[i], hit[i].t, hit[i].u, hit[i].v, hit[i].triangle);
+#if WF_HAS_INSTANCES
+        set_path_hit_instance(path, slot[i], hit[i].instance);
+#endif
+    }
 }
 
 WF_INLINE void intersect_path(PathState* path, uint slot, const Scene* scene) { intersect_paths(path, &slot, 1u, scene); }

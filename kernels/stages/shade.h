@@ -36,6 +36,7 @@
 #include "stages/stage_step.h"
 #include "lights/choose_light.h"
 #include "geometry/ray_offset.h"
+#include "geometry/instance_map.h"
 #include "geometry/triangle_blocks.h"
 #include "lanes/lanes.h"
 
@@ -85,6 +86,9 @@ typedef struct ShadeContext {
  * path state holds them, and the numbers its next bounce draws. */
 typedef struct Arrival {
     uint triangle; /* the BVH position of the hit triangle */
+#if WF_HAS_INSTANCES
+    int instance; /* the placement whose triangle it is */
+#endif
     float t, b1, b2;
     float3 direction;
     float pdf_previous; /* 0 for camera rays and delta bounces: nothing to weigh against */
@@ -102,6 +106,27 @@ typedef struct Arrival {
 #include "stages/scatter.inc"
 #include "stages/surface.inc"
 #undef WF_W
+
+#if WF_HAS_INSTANCES
+/* surface_geometry of a hit on a placement's mesh: found in the mesh's space,
+ * then taken to the world, the point's error bound grown by the map's
+ * rounding (geometry/instance_map.h), the normals by the inverse transpose and
+ * made unit again. The inverse transpose keeps a normal's side, so the front
+ * face is the mesh's. The area stays the mesh's: placements never emit. */
+WF_INLINE SurfaceGeometry_x1 placed_surface_geometry(const Scene* scene, const Arrival* a) {
+    __global const Instance* placement = scene->instances + a->instance;
+    const float3 direction = map_vector(placement->world_to_object, a->direction);
+    SurfaceGeometry_x1 s = surface_geometry_x1(scene, (int)a->triangle, a->b1, a->b2, vec_from_float3(direction));
+    const float3 position = vec_to_float3(s.position);
+    s.position_error =
+        vec_from_float3(map_point_error(placement->object_to_world, position, vec_to_float3(s.position_error)));
+    s.position = vec_from_float3(map_point(placement->object_to_world, position));
+    s.geometric_normal =
+        vec_from_float3(normalize(map_normal(placement->world_to_object, vec_to_float3(s.geometric_normal))));
+    s.normal = vec_from_float3(normalize(map_normal(placement->world_to_object, vec_to_float3(s.normal))));
+    return s;
+}
+#endif
 
 /* A path's arrival: on a miss, the environment it sees, if any, ends it;
  * on a hit, its ray and hit, but for the sample numbers (arrival_numbers).
@@ -133,6 +158,9 @@ WF_INLINE bool path_arrival(PathState* path, const RenderParams* params, uint sl
         return false;
     }
     a->triangle = (uint)triangle;
+#if WF_HAS_INSTANCES
+    a->instance = path_hit_instance(path, slot);
+#endif
     a->t = hit.x;
     a->b1 = hit.y;
     a->b2 = hit.z;
@@ -174,7 +202,12 @@ WF_GPU_INLINE bool shade_surface(PathState* path, const RenderParams* params, ui
     point.b2 = a->b2;
     const __global Material* m = &scene->materials[point.material];
     const lvec1 direction = vec_from_float3(a->direction);
+#if WF_HAS_INSTANCES
+    point.instance = a->instance;
+    const SurfaceGeometry_x1 s = placed_surface_geometry(scene, a);
+#else
     const SurfaceGeometry_x1 s = surface_geometry_x1(scene, (int)a->triangle, a->b1, a->b2, direction);
+#endif
     const float3 geometric_normal = vec_to_float3(s.geometric_normal);
     const float3 shading_normal =
         surface_normal(scene, &point, vec_to_float3(s.normal), geometric_normal, -a->direction);

@@ -36,12 +36,12 @@
      !WF_HAS_ALPHA_MASK && !WF_HAS_CLEARCOAT)
 
 /* No textures, normal maps, vertex colours or first-hit AOVs, and no
- * material with a coat or sheen: a hit's surface is its triangle's corners
- * and normals and its material's factors, and the lanes find it too
- * (stages/surface.inc). */
+ * material with a coat or sheen, and no placements to map a surface to the
+ * world: a hit's surface is its triangle's corners and normals and its
+ * material's factors, and the lanes find it too (stages/surface.inc). */
 #define WF_SURFACE_IN_LANES                                                                  \
     (!WF_HAS_TEXTURES && !WF_HAS_NORMAL_MAPS && !WF_HAS_VERTEX_COLORS && !WF_HAS_AOVS && \
-     !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN)
+     !WF_HAS_CLEARCOAT && !WF_HAS_SHEEN && !WF_HAS_INSTANCES)
 
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"

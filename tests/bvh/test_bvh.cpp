@@ -115,7 +115,7 @@ struct BvhScene {
         for (int32_t i : candidates) {
             wf_device::TriangleHit h;
             if (hits(w, static_cast<size_t>(i), t_max, &h))
-                wf_device::select_hit(&selection, &h, i, light(static_cast<size_t>(i)) >= 0);
+                wf_device::select_hit(&selection, &h, i, -1, light(static_cast<size_t>(i)) >= 0);
         }
         return wf_device::selected_hit(&selection);
     }
@@ -269,7 +269,7 @@ int expect_agreement(const BvhScene& scene, const std::vector<Ray>& rays) {
             for (int stop_at_first_hit = 0; stop_at_first_hit < 2; ++stop_at_first_hit) {
                 RayHit pair[2];
                 wf_device::bvh_traverse_pair(scene.bvh.nodes.data(), scene.triangles.data(), origin, direction, limit,
-                                             stop_at_first_hit, pair);
+                                             stop_at_first_hit, nullptr, pair);
                 for (int k = 0; k < 2; ++k) {
                     const RayHit alone = wf_device::bvh_traverse(scene.bvh.nodes.data(), scene.triangles.data(),
                                                                  origin[k], direction[k], limit, stop_at_first_hit);

@@ -45,7 +45,8 @@ TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     EXPECT_EQ(feature_defines(scene_features(cornell)),
               "-DWF_HAS_BSDF_LAYERED=1 -DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
               "-DWF_HAS_EMISSIVE_TRIANGLES=1 "
-              "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0 -DWF_HAS_TRANSMISSION=0 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0");
+              "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0 -DWF_HAS_TRANSMISSION=0 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0 "
+              "-DWF_HAS_INSTANCES=0");
     const Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
     EXPECT_EQ(describe_features(scene_features(helmet)), "layered BSDF, textures, normal maps, emissive triangles");
     EXPECT_EQ(describe_features(SceneFeatures::all()),

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "bvh/bvh_builder.h"
+#include "bvh/instance_bvh.h"
 #include "device/device_scene.h"
 #include "scene/environment_map.h"
 #include "base/errors.h"
@@ -41,10 +41,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         wf::Scene scene = wf::load_gltf_bytes(scene_path(), std::vector<unsigned char>(data, data + size));
         wf::light_unlit_scene(scene);
-        // load_gltf promises at least one triangle with finite corners, which
-        // is what build_bvh requires; if it throws here, the loader let
-        // something through.
-        const wf::Bvh bvh = wf::build_bvh(scene.positions);
+        // load_gltf promises at least one triangle with finite corners, and
+        // placements it can invert, which is what build_scene_bvh requires;
+        // if it throws here, the loader let something through.
+        const wf::Bvh bvh = wf::build_scene_bvh(scene);
         wf::make_device_scene_data(scene, bvh);
     } catch (const wf::InputError&) {
     }

@@ -125,7 +125,7 @@ TEST_F(GltfLoaderTest, PointsAndLinesAreSkippedWithOneWarningPerMesh) {
     doc.add_root({{"mesh", 0}}); // a second instance must not repeat the warning
     const Scene scene = load_gltf(doc.write(dir_ / "mixed.gltf"));
     expect_well_formed(scene);
-    EXPECT_EQ(scene.triangle_count(), 2u);
+    EXPECT_EQ(scene.placed_triangle_count(), 2u);
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_EQ(scene.warnings[0], "mesh 'mixed': 4 points, 3 lines skipped");
     EXPECT_EQ(scene.mesh_names, std::vector<std::string>{"mixed"});

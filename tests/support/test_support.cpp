@@ -6,6 +6,10 @@
 #include <unistd.h>
 
 #include "device/kernel_program.h"
+#include "gltf/gltf_loader.h"
+#include "scene/mesh_placement.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -60,6 +64,36 @@ Scene furnace_box(float albedo, float emission) {
     Scene scene;
     add_box_inward(scene, glm::vec3(-1.0f), glm::vec3(1.0f),
                    add_material(scene, glm::vec3(albedo), glm::vec3(emission), false));
+    return scene;
+}
+
+Scene instanced_cornell() {
+    const Scene box = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf", LoadOptions{-1, false});
+    const size_t block_mesh =
+        size_t(std::find(box.mesh_names.begin(), box.mesh_names.end(), "short_block") - box.mesh_names.begin());
+    const size_t first = size_t(std::find(box.triangle_mesh.begin(), box.triangle_mesh.end(), block_mesh) -
+                                box.triangle_mesh.begin());
+    size_t count = 0;
+    while (first + count < box.triangle_count() && box.triangle_mesh[first + count] == block_mesh) ++count;
+    Scene scene = box;
+    scene.positions.clear(), scene.normals.clear(), scene.uv0.clear(), scene.uv1.clear(), scene.tangents.clear(),
+        scene.colors.clear(), scene.triangle_material.clear(), scene.triangle_mesh.clear();
+    place_mesh(mesh_of(box, 0, first), glm::dmat4(1.0), scene);
+    place_mesh(mesh_of(box, first + count, box.triangle_count() - first - count), glm::dmat4(1.0), scene);
+    // The block in its own space: standing on y = 0 about the origin.
+    const Bounds b = triangle_bounds(box, first, count);
+    const glm::dvec3 foot(0.5 * (b.lo.x + b.hi.x), 0.0, 0.5 * (b.lo.z + b.hi.z));
+    scene.shared_meshes.push_back({uint32_t(scene.triangle_count()), uint32_t(count)});
+    place_mesh(mesh_of(box, first, count), glm::translate(glm::dmat4(1.0), -foot), scene);
+    const glm::dmat4 identity(1.0);
+    scene.instances.push_back({0, glm::translate(identity, foot)});
+    scene.instances.push_back(
+        {0, glm::scale(glm::translate(identity, glm::dvec3(150.0, 0.0, 420.0)), glm::dvec3(-1.0, 1.0, 1.0))});
+    scene.instances.push_back({0, glm::scale(glm::rotate(glm::translate(identity, glm::dvec3(450.0, 330.0, 130.0)),
+                                                         0.7, glm::dvec3(0.3, 1.0, 0.2)),
+                                             glm::dvec3(0.3, 1.4, 0.5))});
+    scene.instances.push_back({0, glm::scale(glm::translate(identity, glm::dvec3(370.0, 330.0, 350.0)),
+                                             glm::dvec3(0.25))});
     return scene;
 }
 

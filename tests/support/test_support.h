@@ -39,6 +39,12 @@ void report_measured(const std::string& line);
 // reflect `albedo`, where the radiance is emission / (1 - albedo) everywhere.
 Scene furnace_box(float albedo, float emission);
 
+// The Cornell box (scenes/cornell-box.gltf) with its short block a shared
+// mesh placed four times: where it stood, mirrored across x elsewhere on the
+// floor, turned and stretched in the air by the red wall, and shrunk on the
+// tall block. The light and the rest stay in world space.
+Scene instanced_cornell();
+
 // A ray for the device tests; the direction need not be unit.
 using TestRay = BatchRay;
 
