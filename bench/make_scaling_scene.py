@@ -7,12 +7,17 @@ the light transport stays the same. Deterministic: the same N gives the same
 bytes. Numpy builds the arrays; a 4M-triangle scene takes a few seconds and
 about 75 MiB, which is why it is generated where it is used and not stored.
 
-Usage: python3 bench/make_scaling_scene.py TRIANGLES OUT.glb
+With --instances K, the spheres are one mesh placed by K nodes, side by side
+in a square of tiles under one floor and a light K times as strong: K times
+the triangles placed, for the memory of one (the renderer keeps a mesh that
+several nodes place once, host/bvh/instance_bvh.h).
+
+Usage: python3 bench/make_scaling_scene.py TRIANGLES OUT.glb [--instances K]
 """
 
+import argparse
 import json
 import struct
-import sys
 
 import numpy as np
 
@@ -46,9 +51,12 @@ def icosphere(subdivisions):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit(__doc__.strip().splitlines()[-1])
-    triangles, out = int(sys.argv[1]), sys.argv[2]
+    parser = argparse.ArgumentParser(description="Write a generated scene for the scaling benchmark.")
+    parser.add_argument("triangles", type=int)
+    parser.add_argument("out")
+    parser.add_argument("--instances", type=int, default=1, help="nodes placing the spheres' mesh (default 1)")
+    args = parser.parse_args()
+    triangles, out, instances = args.triangles, args.out, args.instances
     sphere_v, sphere_f = icosphere(SPHERE_SUBDIVISIONS)
     count = max(1, round((triangles - 4) / len(sphere_f)))
     side = int(np.ceil(np.sqrt(count)))
@@ -61,9 +69,14 @@ def main():
     centres[:, 1] = radius + rng.uniform(0.0, 0.3, count)
     positions = (sphere_v[None, :, :] * radius[:, None, None] + centres[:, None, :]).astype(np.float32)
     indices = (sphere_f[None, :, :] + (np.arange(count) * len(sphere_v))[:, None, None]).astype(np.uint32)
-    half = side / 2 + 1.0
+    # The tiles the spheres' mesh is placed on, side by side (one, unmoved, without --instances).
+    tiles = int(np.ceil(np.sqrt(instances)))
+    pitch = side + 1.0
+    offsets = [((i % tiles - (tiles - 1) / 2) * pitch, (i // tiles - (tiles - 1) / 2) * pitch) for i in range(instances)]
+    side_placed = side if instances == 1 else tiles * pitch
+    half = side_placed / 2 + 1.0
     floor = np.array([[-half, 0, -half], [-half, 0, half], [half, 0, half], [half, 0, -half]], np.float32)
-    light_y = 3.0 + side * 0.5
+    light_y = 3.0 + side_placed * 0.5
     light = np.array([[-1, light_y, -1], [1, light_y, -1], [1, light_y, 1], [-1, light_y, 1]], np.float32)
     quad = np.array([[0, 1, 2], [0, 2, 3]], np.uint32)
 
@@ -83,11 +96,13 @@ def main():
             accessors.append(accessor)
         gltf_meshes.append({"name": name, "primitives": [
             {"attributes": {"POSITION": len(accessors) - 2}, "indices": len(accessors) - 1, "material": mat}]})
-    distance = 1.2 * side + 2.0
+    distance = 1.2 * side_placed + 2.0
+    sphere_nodes = [{"mesh": 0}] if instances == 1 else \
+        [{"mesh": 0, "translation": [float(x), 0.0, float(z)]} for x, z in offsets]
     gltf = {
         "asset": {"version": "2.0", "generator": "wavefront bench/make_scaling_scene.py"},
-        "scene": 0, "scenes": [{"nodes": list(range(len(meshes) + 1))}],
-        "nodes": [{"mesh": i} for i in range(len(meshes))] +
+        "scene": 0, "scenes": [{"nodes": list(range(len(sphere_nodes) + len(meshes)))}],
+        "nodes": sphere_nodes + [{"mesh": i} for i in range(1, len(meshes))] +
                  [{"camera": 0, "translation": [0.0, 0.6 * distance, distance],
                    "rotation": [float(-np.sin(0.25)), 0.0, 0.0, float(np.cos(0.25))]}],
         "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.01, "aspectRatio": 1.0}}],
@@ -95,7 +110,7 @@ def main():
         "materials": [{"name": "white", "pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.7, 0.7, 1.0],
                                                                  "metallicFactor": 0.0, "roughnessFactor": 1.0}},
                       {"name": "light", "emissiveFactor": [1.0, 1.0, 1.0],
-                       "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4.0 * side}}}],
+                       "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4.0 * side_placed}}}],
         "extensionsUsed": ["KHR_materials_emissive_strength"],
         "buffers": [{"byteLength": len(blob)}], "bufferViews": views, "accessors": accessors,
     }
@@ -105,7 +120,8 @@ def main():
         f.write(struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(text) + 8 + len(blob)))
         f.write(struct.pack("<II", len(text), 0x4E4F534A) + text)
         f.write(struct.pack("<II", len(blob), 0x004E4942) + bytes(blob))
-    print(f"{out}: {count * len(sphere_f) + 4} triangles")
+    placed = f", {instances} placements of {count * len(sphere_f)}" if instances > 1 else ""
+    print(f"{out}: {instances * count * len(sphere_f) + 4} triangles{placed}")
 
 
 if __name__ == "__main__":

@@ -176,6 +176,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
                       " compute units, " + device.info.platform + ")";
     summary_.times.kernel_build = program_.build_seconds;
     summary_.triangles = scene.triangle_count();
+    summary_.placed_triangles = scene.placed_triangle_count();
     summary_.materials = scene.materials.size();
     summary_.emissive_triangles = data.emissive_triangles;
     summary_.punctual_lights = data.punctual.size();

@@ -21,7 +21,9 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     const double closest_kernel = st.stages[STAGE_INTERSECT].seconds;
     const double shadow_kernel = st.stages[STAGE_INTERSECT_SHADOW].seconds;
     out << std::fixed << std::setprecision(3);
-    out << "scene      " << s.scene << ": " << s.triangles << " triangles, " << s.materials << " materials, "
+    out << "scene      " << s.scene << ": " << s.triangles << " triangles, ";
+    if (s.placed_triangles != s.triangles) out << s.placed_triangles << " as placed, ";
+    out << s.materials << " materials, "
         << s.emissive_triangles << " emissive triangles, " << s.punctual_lights << " punctual lights, "
         << (s.environment ? "an environment" : "no environment") << "\n";
     out << "features   " << s.features << "\n";

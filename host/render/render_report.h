@@ -28,7 +28,8 @@ struct DeviceShare {
 
 struct RenderSummary {
     std::string scene;
-    size_t triangles = 0;
+    size_t triangles = 0;        // held: a shared mesh's once
+    size_t placed_triangles = 0; // as placed: a shared mesh's once per instance
     size_t materials = 0;
     size_t emissive_triangles = 0;
     size_t punctual_lights = 0;

@@ -24,6 +24,7 @@ void write_stats_json(const std::string& path, const RenderSummary& s) {
     j["ranks"] = s.ranks;
     j["features"] = s.features;
     j["triangles"] = s.triangles;
+    j["placed_triangles"] = s.placed_triangles;
     j["width"] = s.width;
     j["height"] = s.height;
     j["spp"] = s.spp;
