@@ -25,31 +25,6 @@
 namespace wf {
 namespace {
 
-void add_smooth_sphere(Scene& scene, uint32_t material, int rings = 64, int segments = 128) {
-    if (scene.mesh_names.empty()) scene.mesh_names.push_back("sphere");
-    auto point = [&](int i, int j) {
-        const float theta = glm::pi<float>() * float(i) / float(rings),
-                    phi = glm::two_pi<float>() * float(j) / float(segments);
-        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-    };
-    auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-        if (glm::length(glm::cross(b - a, c - a)) == 0.0f) return; // the poles' collapsed corners
-        for (const glm::vec3& p : {a, b, c}) {
-            scene.positions.push_back(p);
-            scene.normals.push_back(glm::normalize(p)); // the unit sphere's own normal
-        }
-        scene.triangle_material.push_back(material);
-        scene.triangle_mesh.push_back(0);
-    };
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < segments; ++j) {
-            // Counter-clockwise seen from outside.
-            const glm::vec3 a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1), d = point(i, j + 1);
-            add(a, d, c);
-            add(a, c, b);
-        }
-}
-
 // The direction of the camera ray through image point (x, y) in [0, 1]^2, as
 // kernels/stages/generate.h computes it.
 glm::vec3 camera_ray(const SceneCamera& c, ImageSize size, float x, float y) {
@@ -126,7 +101,7 @@ TEST_P(WhiteFurnace, ASphereReturnsTheSkyEverywhereTheRimIncluded) {
     scene.materials[m].clearcoat_roughness = c.clearcoat_roughness;
     scene.materials[m].sheen_color = glm::vec3(c.sheen);
     scene.materials[m].sheen_roughness = c.sheen_roughness;
-    add_smooth_sphere(scene, m);
+    test::add_smooth_sphere(scene, m);
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
 
     RenderSettings settings;

@@ -6,13 +6,16 @@
 // written-out scene; and the placements cost memory by the unique triangles.
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "bvh/instance_bvh.h"
 #include "image/error_metrics.h"
 #include "render/renderer.h"
+#include "scene/environment_map.h"
 #include "support/test_support.h"
 
 namespace wf {
@@ -70,6 +73,53 @@ TEST(Instancing, GpuKernelsRenderTheSceneWrittenOut) {
     const Image gpu = render(instanced, settings).film.mean;
     settings.kernels = KernelKind::Cpu;
     EXPECT_TRUE(same_bytes(gpu, render(flattened(instanced), settings).film.mean));
+}
+
+// The stiff case: a white Lambertian sphere placed far from the origin at
+// scales from 0.01 to 100, mirrored and stretched, under a uniform sky of
+// radiance 1. Every surface returns the sky, so every pixel is 1; a ray that
+// slipped through a surface into a sphere (offsets too small for the maps'
+// rounding) would be trapped and dim it.
+TEST(Instancing, AWhiteFurnaceFarFromTheOriginReturnsTheSky) {
+    Scene scene;
+    const uint32_t white = test::add_material(scene, glm::vec3(1.0f), glm::vec3(0.0f), false);
+    scene.shared_meshes.push_back({0u, 0u});
+    test::add_smooth_sphere(scene, white, 16, 32);
+    scene.shared_meshes[0].count = uint32_t(scene.triangle_count());
+    const glm::dvec3 far(3.0e4, -2.0e4, 1.0e4);
+    const auto place = [&](glm::dvec3 at, glm::dvec3 scale, double turn) {
+        glm::dmat4 m = glm::translate(glm::dmat4(1.0), far + at);
+        m = glm::rotate(m, turn, glm::normalize(glm::dvec3(1.0, 2.0, 3.0)));
+        scene.instances.push_back({0u, glm::scale(m, scale)});
+    };
+    place({0, 0, 0}, glm::dvec3(100.0), 0.0);
+    place({0, 0, 101.5}, glm::dvec3(1.0), 0.3);      // a hair above the big one
+    place({30, 30, 95.2}, glm::dvec3(0.01), 1.0);    // tiny, above it, seen close up by the second camera
+    place({-140, 0, 0}, {-30.0, 20.0, 30.0}, 2.0);   // mirrored and stretched
+    place({0, 130, 0}, {50.0, 5.0, 50.0}, 0.7);      // a flattened disc
+    scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    RenderSettings settings;
+    settings.max_depth = WF_UNLIMITED_DEPTH;
+    settings.spp = 16;
+    settings.seed = 4;
+    const ImageSize size{48, 48};
+    for (const SceneCamera& camera :
+         {test::camera_looking(glm::vec3(far + glm::dvec3(0, 0, 400)), {0, 0, -1}, {0, 1, 0}, 0.9f),
+          test::camera_looking(glm::vec3(far + glm::dvec3(30, 30, 96.5)), {0, 0, -1}, {0, 1, 0}, 0.02f)}) {
+        const FilmReadout film = render_scene(test::cpu_device(), scene, camera, size, settings).film;
+        double sum = 0.0, variance = 0.0;
+        const size_t n = size_t{size.width} * size.height;
+        for (size_t i = 0; i < n; ++i) {
+            sum += (film.mean.rgb[3 * i] + film.mean.rgb[3 * i + 1] + film.mean.rgb[3 * i + 2]) / 3.0;
+            variance += film.variance_of_mean.rgb[3 * i];
+        }
+        const double mean = sum / n, standard_error = std::sqrt(variance) / n;
+        std::ostringstream line;
+        line << "instanced white furnace 3e4 from the origin, scales 0.01-100: mean " << mean << " +- "
+             << standard_error;
+        test::report_measured(line.str());
+        EXPECT_NEAR(mean, 1.0, 0.005 + 3.0 * standard_error);
+    }
 }
 
 TEST(Instancing, MemoryGrowsWithTheUniqueTriangles) {

@@ -9,6 +9,7 @@
 #include "gltf/gltf_loader.h"
 #include "scene/mesh_placement.h"
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -65,6 +66,31 @@ Scene furnace_box(float albedo, float emission) {
     add_box_inward(scene, glm::vec3(-1.0f), glm::vec3(1.0f),
                    add_material(scene, glm::vec3(albedo), glm::vec3(emission), false));
     return scene;
+}
+
+void add_smooth_sphere(Scene& scene, uint32_t material, int rings, int segments) {
+    if (scene.mesh_names.empty()) scene.mesh_names.push_back("sphere");
+    auto point = [&](int i, int j) {
+        const float theta = glm::pi<float>() * float(i) / float(rings),
+                    phi = glm::two_pi<float>() * float(j) / float(segments);
+        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+    };
+    auto add = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+        if (glm::length(glm::cross(b - a, c - a)) == 0.0f) return; // the poles' collapsed corners
+        for (const glm::vec3& p : {a, b, c}) {
+            scene.positions.push_back(p);
+            scene.normals.push_back(glm::normalize(p)); // the unit sphere's own normal
+        }
+        scene.triangle_material.push_back(material);
+        scene.triangle_mesh.push_back(0);
+    };
+    for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < segments; ++j) {
+            // Counter-clockwise seen from outside.
+            const glm::vec3 a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1), d = point(i, j + 1);
+            add(a, d, c);
+            add(a, c, b);
+        }
 }
 
 Scene instanced_cornell() {

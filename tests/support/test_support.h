@@ -39,6 +39,10 @@ void report_measured(const std::string& line);
 // reflect `albedo`, where the radiance is emission / (1 - albedo) everywhere.
 Scene furnace_box(float albedo, float emission);
 
+// The unit sphere about the origin, `rings` x `segments` quads, with the
+// sphere's own normals at the corners.
+void add_smooth_sphere(Scene& scene, uint32_t material, int rings = 64, int segments = 128);
+
 // The Cornell box (scenes/cornell-box.gltf) with its short block a shared
 // mesh placed four times: where it stood, mirrored across x elsewhere on the
 // floor, turned and stretched in the air by the red wall, and shrunk on the
