@@ -8,7 +8,7 @@ bytes. Numpy builds the arrays; a 4M-triangle scene takes a few seconds and
 about 75 MiB, which is why it is generated where it is used and not stored.
 
 With --instances K, the spheres are one mesh placed by K nodes, side by side
-in a square of tiles under one floor and a light K times as strong: K times
+in a square of tiles under one floor and a light as strong as the floor is wide: K times
 the triangles placed, for the memory of one (the renderer keeps a mesh that
 several nodes place once, host/bvh/instance_bvh.h).
 

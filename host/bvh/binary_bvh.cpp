@@ -33,8 +33,9 @@ constexpr int kBinCount = 16;
 // with anything from 0.33 to 1.
 constexpr double kTraversalCost = 0.5;
 
-// Four-triangle tests that n triangles take.
-double leaf_tests(uint32_t n) { return static_cast<double>((n + kMaxLeafSize - 1) / kMaxLeafSize); }
+// Four-triangle tests that n triangles take, in leaves of at most max_leaf
+// (a two-level tree's top prices a placement as one such test).
+double leaf_tests(uint32_t n, uint32_t max_leaf) { return static_cast<double>((n + max_leaf - 1) / max_leaf); }
 
 struct PrimRef {
     Bounds bounds;
@@ -42,10 +43,10 @@ struct PrimRef {
     uint32_t triangle;
 };
 
-// Depth of the subtree that median splits build over n triangles.
-int median_levels(uint32_t n) {
+// Depth of the subtree that median splits build over n triangles, in leaves of at most max_leaf.
+int median_levels(uint32_t n, uint32_t max_leaf) {
     int levels = 1;
-    for (; n > kMaxLeafSize; n = (n + 1) / 2) ++levels;
+    for (; n > max_leaf; n = (n + 1) / 2) ++levels;
     return levels;
 }
 
@@ -80,7 +81,7 @@ struct SahSplit {
 
 class Builder {
 public:
-    explicit Builder(std::vector<PrimRef> prims) : prims_(std::move(prims)) {}
+    Builder(std::vector<PrimRef> prims, uint32_t max_leaf) : prims_(std::move(prims)), max_leaf_(max_leaf) {}
     BinaryBvh build();
 
 private:
@@ -92,6 +93,7 @@ private:
     uint32_t median_split(uint32_t begin, uint32_t end, const Bounds& centroids);
 
     std::vector<PrimRef> prims_;
+    uint32_t max_leaf_; // primitives a leaf holds at most
     BinaryBvh bvh_;
 };
 
@@ -160,9 +162,9 @@ uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, cons
         const BinMap bin_map(centroids);
         const SahSplit sah = best_sah_split(begin, end, bin_map, area);
         if (sah.axis >= 0) {
-            if (count <= kMaxLeafSize && area * leaf_tests(count) <= sah.cost) return end;
+            if (count <= max_leaf_ && area * leaf_tests(count, max_leaf_) <= sah.cost) return end;
             const uint32_t larger_child = std::max(sah.left_count, count - sah.left_count);
-            if (depth + median_levels(larger_child) <= kMaxBinaryDepth) {
+            if (depth + median_levels(larger_child, max_leaf_) <= kMaxBinaryDepth) {
                 const auto first = prims_.begin() + begin;
                 const auto middle = std::partition(first, prims_.begin() + end, [&](const PrimRef& p) {
                     return bin_map.bin(p.centroid, sah.axis) < sah.bin;
@@ -171,7 +173,7 @@ uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, cons
             }
         }
     }
-    if (count <= kMaxLeafSize) return end;
+    if (count <= max_leaf_) return end;
     return median_split(begin, end, centroids);
 }
 
@@ -209,8 +211,8 @@ SahSplit Builder::best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin
             left.grow(row[b - 1].bounds);
             left_total += row[b - 1].count;
             if (left_total == 0 || right_count[b] == 0) continue;
-            const double cost = kTraversalCost * area + half_area(left) * leaf_tests(left_total) +
-                                right_area[b] * leaf_tests(right_count[b]);
+            const double cost = kTraversalCost * area + half_area(left) * leaf_tests(left_total, max_leaf_) +
+                                right_area[b] * leaf_tests(right_count[b], max_leaf_);
             if (cost < best.cost) best = SahSplit{axis, b, left_total, cost};
         }
     }
@@ -238,7 +240,7 @@ double half_area(const Bounds& b) {
 }
 
 BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions) {
-    return Builder(triangle_prims(positions)).build();
+    return Builder(triangle_prims(positions), kMaxLeafSize).build();
 }
 
 BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes) {
@@ -251,7 +253,7 @@ BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes) {
             throw std::invalid_argument("build_bvh: box " + std::to_string(i) + " is empty or not finite");
         prims[i] = PrimRef{b, b.center(), static_cast<uint32_t>(i)};
     }
-    return Builder(std::move(prims)).build();
+    return Builder(std::move(prims), 1).build();
 }
 
 } // namespace wf

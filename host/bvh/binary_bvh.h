@@ -41,8 +41,8 @@ struct BinaryBvh {
 BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions);
 
 // The same over boxes (the placements of a two-level tree,
-// host/bvh/instance_bvh.h), order indexing `boxes`; throws where there are
-// none or one is empty or not finite.
+// host/bvh/instance_bvh.h), one a leaf, order indexing `boxes`; throws where
+// there are none or one is empty or not finite.
 BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes);
 
 // Half the surface area, which SAH weighs by; in double, where the products of

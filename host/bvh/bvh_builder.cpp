@@ -49,7 +49,8 @@ constexpr double kNodeCost = 1.0;
 
 class Collapser {
 public:
-    explicit Collapser(BinaryBvh binary)
+    // max_run: the most triangles (or boxes) a leaf of the wide tree may hold.
+    Collapser(BinaryBvh binary, uint32_t max_run)
         : binary_(std::move(binary)), first_(binary_.nodes.size()), triangles_(binary_.nodes.size()),
           height_(binary_.nodes.size(), 0), as_leaf_(binary_.nodes.size(), false) {
         // Children come after their parents, so a reverse sweep sees them first.
@@ -69,7 +70,7 @@ public:
             height_[n] = 1 + std::max(height_[left], height_[right]);
             const double as_node = kNodeCost * area + cost[left] + cost[right];
             const double as_leaf = area * ((triangles_[n] + kMaxLeafSize - 1) / kMaxLeafSize);
-            as_leaf_[n] = triangles_[n] <= kMaxLeafRun && as_leaf <= as_node;
+            as_leaf_[n] = triangles_[n] <= max_run && as_leaf <= as_node;
             cost[n] = std::min(as_leaf, as_node);
         }
     }
@@ -159,11 +160,11 @@ private:
 } // namespace
 
 Bvh build_bvh(const std::vector<glm::vec3>& positions) {
-    Bvh bvh = Collapser(build_binary_bvh(positions)).build();
+    Bvh bvh = Collapser(build_binary_bvh(positions), kMaxLeafRun).build();
     place_leaves_in_blocks(bvh);
     return bvh;
 }
 
-Bvh build_box_bvh(const std::vector<Bounds>& boxes) { return Collapser(build_binary_bvh(boxes)).build(); }
+Bvh build_box_bvh(const std::vector<Bounds>& boxes) { return Collapser(build_binary_bvh(boxes), 1).build(); }
 
 } // namespace wf

@@ -38,8 +38,8 @@ struct Bvh {
 // build_binary_bvh (host/bvh/binary_bvh.h) does.
 Bvh build_bvh(const std::vector<glm::vec3>& positions);
 
-// The same tree over boxes, as a two-level tree's top (instance_bvh.h): its
-// leaves are runs of `order`, which indexes `boxes`, not placed in blocks.
+// The same tree over boxes, as a two-level tree's top (instance_bvh.h): each
+// leaf one box, a position of `order`, which indexes `boxes`; no blocks.
 Bvh build_box_bvh(const std::vector<Bounds>& boxes);
 
 } // namespace wf

@@ -1,25 +1,66 @@
 // instance_bvh.cpp — see instance_bvh.h. The world-space triangles are one
-// more placement, under the identity (whose arithmetic leaves a ray's bits as
-// they are), so that the traversal knows one kind of leaf in the top tree.
+// more placement, under the identity (whose arithmetic keeps a ray's bits but
+// for the sign of a zero), so that the traversal knows one kind of leaf in
+// the top tree.
 #include "bvh/instance_bvh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace wf {
 namespace {
 
-// A placement's box grown by 2^-18 of its largest coordinate: far beyond the
-// few ulps by which a ray mapped into the mesh's space, rounded, moves a hit.
-Bounds grown(const Bounds& b) {
-    const glm::vec3 reach = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-    const float pad = 0x1p-18f * std::max(std::max(reach.x, reach.y), reach.z);
-    return Bounds{b.lo - pad, b.hi + pad};
+glm::dmat4 float_matrix(const float (&rows)[3][4]) {
+    glm::dmat4 m(1.0);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m[c][r] = rows[r][c]; // glm is column-major
+    return m;
 }
 
 void store_rows(float (&rows)[3][4], const glm::dmat4& m) {
     for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) rows[r][c] = float(m[c][r]); // glm is column-major
+        for (int c = 0; c < 4; ++c) rows[r][c] = float(m[c][r]);
+}
+
+// How far a placement's stored maps stretch a vector there and back: the
+// largest row of |M| |W| 1 for their linear parts, at least 1.
+double stretch(const Instance& p) {
+    const glm::dmat3 m(float_matrix(p.object_to_world)), w(float_matrix(p.world_to_object));
+    double most = 1.0;
+    for (int r = 0; r < 3; ++r) {
+        double row = 0.0;
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) row += std::abs(m[k][r]) * std::abs(w[c][k]);
+        most = std::max(most, row);
+    }
+    return most;
+}
+
+// The placement's maps as the kernels hold them, in float.
+Instance placement(const glm::dmat4& object_to_world) {
+    Instance p{};
+    store_rows(p.object_to_world, object_to_world);
+    store_rows(p.world_to_object, glm::inverse(object_to_world));
+    p.handedness = glm::determinant(glm::dmat3(object_to_world)) < 0.0 ? -1.0f : 1.0f;
+    // The hit's own rounding (the 2), and the way back, when a ray leaving
+    // the point is mapped into the mesh's space again: its rounding and the
+    // stored inverse's departure from the exact one, each carried back to the
+    // world through the stretch (the 4 covers both, with room).
+    p.error_scale = float(2.0 + 4.0 * stretch(p));
+    return p;
+}
+
+// A placement's box grown by 2^-18 of its largest coordinate times its
+// stretch: the rounding of a ray mapped into the mesh's space moves a hit by
+// a few ulps of its coordinates times the stretch. (A ray from far beyond the
+// box moves it by ulps of its origin instead, which the box test's own pad,
+// 2^-20 of the origin's reach, covers up to a stretch of about 5:
+// geometry/bvh_traverse.h.)
+Bounds grown(const Bounds& b, double stretch) {
+    const glm::vec3 reach = glm::max(glm::abs(b.lo), glm::abs(b.hi));
+    const float pad = float(0x1p-18 * stretch) * std::max(std::max(reach.x, reach.y), reach.z);
+    return Bounds{b.lo - pad, b.hi + pad};
 }
 
 // A mesh's tree appended to `into`: its node indices and BVH positions
@@ -42,51 +83,45 @@ uint32_t append_tree(Bvh& into, const Bvh& tree, uint32_t first) {
     return node_base;
 }
 
+// The tree of the scene's triangles [first, first + count), appended.
+uint32_t append_tree(Bvh& into, const Scene& scene, size_t first, size_t count) {
+    const std::vector<glm::vec3> corners(scene.positions.begin() + 3 * first,
+                                         scene.positions.begin() + 3 * (first + count));
+    return append_tree(into, build_bvh(corners), uint32_t(first));
+}
+
 } // namespace
 
 Bvh build_scene_bvh(const Scene& scene) {
     if (scene.instances.empty()) return build_bvh(scene.positions);
 
-    // The placements: the world-space triangles, if any, then the instances.
-    struct Placement {
-        size_t first, count; // scene triangles
-        glm::dmat4 object_to_world;
-        Bounds box;
-    };
-    std::vector<Placement> placements;
-    if (scene.world_triangle_count() > 0)
-        placements.push_back({0, scene.world_triangle_count(), glm::dmat4(1.0),
-                              triangle_bounds(scene, 0, scene.world_triangle_count())});
-    for (const MeshInstance& instance : scene.instances) {
-        const SharedMesh& mesh = scene.shared_meshes[instance.mesh];
-        placements.push_back({mesh.first, mesh.count, instance.object_to_world,
-                              grown(transformed_bounds(triangle_bounds(scene, mesh.first, mesh.count),
-                                                       instance.object_to_world))});
-    }
+    // The placements, the world-space triangles under the identity first if
+    // there are any, with their boxes in the world.
+    const bool world = scene.world_triangle_count() > 0;
+    std::vector<Instance> placements;
     std::vector<Bounds> boxes;
-    for (const Placement& p : placements) boxes.push_back(p.box);
+    if (world) {
+        placements.push_back(placement(glm::dmat4(1.0)));
+        boxes.push_back(grown(triangle_bounds(scene, 0, scene.world_triangle_count()), 1.0));
+    }
+    const std::vector<Bounds> mesh_boxes = shared_mesh_bounds(scene);
+    for (const MeshInstance& instance : scene.instances) {
+        placements.push_back(placement(instance.object_to_world));
+        boxes.push_back(grown(transformed_bounds(mesh_boxes[instance.mesh], instance.object_to_world),
+                              stretch(placements.back())));
+    }
     Bvh bvh = build_box_bvh(boxes);
     const std::vector<uint32_t> top_order = std::move(bvh.order);
     bvh.order.clear();
 
-    // Each tree once, in the order of first placement.
-    std::vector<uint32_t> root_of_first(scene.triangle_count() + 1, 0u); // by a tree's first scene triangle
-    std::vector<bool> built(scene.triangle_count() + 1, false);
-    for (const Placement& p : placements) {
-        if (built[p.first]) continue;
-        const std::vector<glm::vec3> corners(scene.positions.begin() + 3 * p.first,
-                                             scene.positions.begin() + 3 * (p.first + p.count));
-        root_of_first[p.first] = append_tree(bvh, build_bvh(corners), uint32_t(p.first));
-        built[p.first] = true;
-    }
+    // Each tree once, after the top tree: the world's, then the meshes'.
+    const uint32_t world_root = world ? append_tree(bvh, scene, 0, scene.world_triangle_count()) : 0u;
+    std::vector<uint32_t> mesh_root;
+    for (const SharedMesh& mesh : scene.shared_meshes) mesh_root.push_back(append_tree(bvh, scene, mesh.first, mesh.count));
     for (uint32_t i : top_order) {
-        const Placement& p = placements[i];
-        Instance instance{};
-        store_rows(instance.object_to_world, p.object_to_world);
-        store_rows(instance.world_to_object, glm::inverse(p.object_to_world));
-        instance.root = root_of_first[p.first];
-        instance.handedness = glm::determinant(glm::dmat3(p.object_to_world)) < 0.0 ? -1.0f : 1.0f;
-        bvh.instances.push_back(instance);
+        Instance p = placements[i];
+        p.root = world && i == 0 ? world_root : mesh_root[scene.instances[i - (world ? 1 : 0)].mesh];
+        bvh.instances.push_back(p);
     }
     return bvh;
 }

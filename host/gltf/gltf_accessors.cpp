@@ -286,7 +286,8 @@ std::vector<glm::dvec4> read_rotations(const Model& model, int index, size_t cou
     const std::vector<double> values = read_accessor(model, accessor, where, what);
     std::vector<glm::dvec4> rotations(count);
     for (size_t i = 0; i < count; ++i) {
-        for (int c = 0; c < 4; ++c) rotations[i][c] = std::max(values[4 * i + c] * scale, -1.0);
+        for (int c = 0; c < 4; ++c) // a normalized integer's least value lies below -1 (glTF 2.0 §3.11)
+            rotations[i][c] = type == TINYGLTF_COMPONENT_TYPE_FLOAT ? values[4 * i + c] : std::max(values[4 * i + c] * scale, -1.0);
         const double length = glm::length(rotations[i]);
         if (!(length > 0.0) || !std::isfinite(length))
             fail(where, what + ": rotation " + std::to_string(i) + " has no direction");

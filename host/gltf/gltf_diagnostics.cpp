@@ -10,9 +10,10 @@ namespace {
 
 const std::set<std::string>& supported_extensions() {
     static const std::set<std::string> names = {
-        "EXT_mesh_gpu_instancing",  "KHR_lights_punctual",      "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
-        "KHR_materials_ior",        "KHR_materials_specular",     "KHR_materials_transmission",
-        "KHR_materials_sheen",      "KHR_materials_volume",       "KHR_texture_transform"};
+        "EXT_mesh_gpu_instancing", "KHR_lights_punctual",        "KHR_materials_clearcoat",
+        "KHR_materials_emissive_strength", "KHR_materials_ior",  "KHR_materials_specular",
+        "KHR_materials_transmission",      "KHR_materials_sheen", "KHR_materials_volume",
+        "KHR_texture_transform"};
     return names;
 }
 

@@ -46,7 +46,7 @@ using tinygltf::Model;
 class SceneBuilder {
 public:
     SceneBuilder(const Model& model, const std::string& path)
-        : model_(model), path_(path), meshes_(model.meshes.size()) {}
+        : model_(model), path_(path), meshes_(model.meshes.size()), shares_(model.meshes.size()) {}
 
     Scene build(const LoadOptions& options) {
         check_extensions(model_, path_, scene_.warnings);
@@ -71,7 +71,8 @@ private:
     struct Placement {
         size_t mesh;
         glm::dmat4 world;
-        std::string where; // the node, for messages
+        size_t node;      // the node that places it,
+        int64_t instance; // and its EXT_mesh_gpu_instancing instance, -1 for none (where_of)
     };
 
     // Scene::materials mirrors the file's materials index for index; the
@@ -174,12 +175,11 @@ private:
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail(where, "mesh " + std::to_string(node.mesh) + " does not exist");
             const std::vector<glm::dmat4> instances = mesh_instances(model_, node, where);
-            if (instances.empty()) placements_.push_back({size_t(node.mesh), world, where});
+            if (instances.empty()) placements_.push_back({size_t(node.mesh), world, index, -1});
             for (size_t i = 0; i < instances.size(); ++i) { // EXT_mesh_gpu_instancing: each its own placement
-                const std::string at = where + ": instance " + std::to_string(i);
-                const glm::dmat4 placed = world * instances[i];
-                check_float_range(placed, at, "transform");
-                placements_.push_back({size_t(node.mesh), placed, at});
+                const Placement placed{size_t(node.mesh), world * instances[i], index, int64_t(i)};
+                check_float_range(placed.world, where_of(placed), "transform");
+                placements_.push_back(placed);
             }
         }
         if (node.camera >= 0) {
@@ -190,6 +190,12 @@ private:
         return world;
     }
 
+    // The node, and the instance of EXT_mesh_gpu_instancing, that placed a mesh: for messages alone.
+    std::string where_of(const Placement& placed) const {
+        const std::string node = path_ + ": " + label("node", placed.node, model_.nodes[placed.node].name);
+        return placed.instance < 0 ? node : node + ": instance " + std::to_string(placed.instance);
+    }
+
     // Appends one placement of a mesh in world space (scene/mesh_placement.h).
     // A transform that carries a finite vertex past float range is an error.
     void flatten(const Placement& placed) {
@@ -197,50 +203,79 @@ private:
         for (size_t corner = 0; corner < mesh.positions.size(); ++corner) {
             const glm::dvec3 p(placed.world * glm::dvec4(mesh.positions[corner], 1.0));
             if (!glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxCoordinate))))
-                fail(placed.where + ": " + label("mesh", placed.mesh, model_.meshes[placed.mesh].name),
+                fail(where_of(placed) + ": " + label("mesh", placed.mesh, model_.meshes[placed.mesh].name),
                      "vertex " + std::to_string(corner) +
                          " leaves float range (a quarter of FLT_MAX) after the node transform");
         }
         place_mesh(mesh, placed.world, scene_);
     }
 
-    // Whether a placement can be an instance of a shared mesh: a transform
-    // the kernels can invert, and a mesh that emits nothing (each placement
-    // of an emitter is a light of its own) and stays in float range.
+    // What sharing needs of a mesh, found once: whether it may be shared
+    // (it has triangles, emits nothing, since each placement of an emitter is
+    // a light of its own, and its own coordinates are in range), and its box.
+    struct MeshShare {
+        bool allowed = false;
+        Bounds box;
+    };
+
+    const MeshShare& mesh_share(size_t mesh_index) {
+        std::optional<MeshShare>& cached = shares_[mesh_index];
+        if (cached) return *cached;
+        const MeshTriangles& mesh = mesh_triangles(mesh_index);
+        MeshShare share;
+        for (const glm::vec3& p : mesh.positions) share.box.grow(p);
+        share.allowed = !mesh.materials.empty() && within_float_range(share.box);
+        for (uint32_t material : mesh.materials) share.allowed = share.allowed && !scene_.materials[material].emits();
+        return *(cached = share);
+    }
+
+    static bool within_float_range(const Bounds& b) {
+        const float limit = float(kMaxCoordinate);
+        return glm::all(glm::lessThanEqual(glm::abs(b.lo), glm::vec3(limit))) &&
+               glm::all(glm::lessThanEqual(glm::abs(b.hi), glm::vec3(limit)));
+    }
+
+    // Whether a placement can be an instance of a shared mesh: a mesh that
+    // may be shared, and a transform the kernels can invert whose placed box
+    // stays in float range.
     bool can_share(const Placement& placed) {
-        const MeshTriangles& mesh = mesh_triangles(placed.mesh);
-        if (mesh.materials.empty()) return false;
-        for (uint32_t material : mesh.materials)
-            if (scene_.materials[material].emits()) return false;
+        const MeshShare& mesh = mesh_share(placed.mesh);
+        if (!mesh.allowed) return false;
         const double det = glm::determinant(glm::dmat3(placed.world));
         if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
         const glm::dmat4 inverse = glm::inverse(placed.world);
         for (int column = 0; column < 4; ++column)
             if (!glm::all(glm::lessThanEqual(glm::abs(inverse[column]), glm::dvec4(kMaxCoordinate)))) return false;
-        Bounds box;
-        for (const glm::vec3& p : mesh.positions) box.grow(p);
-        const Bounds placed_box = transformed_bounds(box, placed.world);
-        return glm::all(glm::lessThanEqual(glm::abs(placed_box.lo), glm::vec3(float(kMaxCoordinate)))) &&
-               glm::all(glm::lessThanEqual(glm::abs(placed_box.hi), glm::vec3(float(kMaxCoordinate))));
+        return within_float_range(transformed_bounds(mesh.box, placed.world));
     }
 
     // The meshes placed: in world space, each where it is placed, but for a
-    // mesh placed by several nodes, which is kept once after them and placed
-    // by instances (LoadOptions::instancing).
+    // mesh that two or more placements can share, which is kept once after
+    // the rest and placed by instances (LoadOptions::instancing).
     void place_meshes(bool instancing) {
-        std::vector<std::vector<size_t>> shared(model_.meshes.size()); // placements, by mesh
-        for (size_t i = 0; i < placements_.size(); ++i)
-            if (instancing && can_share(placements_[i])) shared[placements_[i].mesh].push_back(i);
+        std::vector<bool> sharing(placements_.size(), false);
+        std::vector<size_t> sharers(model_.meshes.size(), 0);
+        for (size_t i = 0; i < placements_.size() && instancing; ++i)
+            if (can_share(placements_[i])) {
+                sharing[i] = true;
+                ++sharers[placements_[i].mesh];
+            }
         for (size_t i = 0; i < placements_.size(); ++i) {
-            const std::vector<size_t>& mine = shared[placements_[i].mesh];
-            if (mine.size() < 2 || std::find(mine.begin(), mine.end(), i) == mine.end()) flatten(placements_[i]);
+            sharing[i] = sharing[i] && sharers[placements_[i].mesh] >= 2;
+            if (!sharing[i]) flatten(placements_[i]);
         }
-        for (size_t mesh = 0; mesh < shared.size(); ++mesh) {
-            if (shared[mesh].size() < 2) continue;
-            const uint32_t index = uint32_t(scene_.shared_meshes.size());
-            scene_.shared_meshes.push_back({uint32_t(scene_.triangle_count()), uint32_t(mesh_triangles(mesh).materials.size())});
-            place_mesh(mesh_triangles(mesh), glm::dmat4(1.0), scene_);
-            for (size_t i : shared[mesh]) scene_.instances.push_back({index, placements_[i].world});
+        constexpr uint32_t kNotShared = ~0u;
+        std::vector<uint32_t> shared_index(model_.meshes.size(), kNotShared);
+        for (size_t i = 0; i < placements_.size(); ++i) {
+            if (!sharing[i]) continue;
+            const size_t mesh = placements_[i].mesh;
+            if (shared_index[mesh] == kNotShared) {
+                shared_index[mesh] = uint32_t(scene_.shared_meshes.size());
+                scene_.shared_meshes.push_back(
+                    {uint32_t(scene_.triangle_count()), uint32_t(mesh_triangles(mesh).materials.size())});
+                place_mesh(mesh_triangles(mesh), glm::dmat4(1.0), scene_);
+            }
+            scene_.instances.push_back({shared_index[mesh], placements_[i].world});
         }
     }
 
@@ -304,6 +339,7 @@ private:
     std::optional<uint32_t> default_material_;
     std::vector<PlacedCamera> cameras_; // in the order the node walk met them
     std::vector<Placement> placements_; // the meshes placed, in the order the node walk met them
+    std::vector<std::optional<MeshShare>> shares_; // by glTF mesh index, found on first use
     std::vector<NodeWorld> visited_;    // every node the walk reached, for its lights
 };
 

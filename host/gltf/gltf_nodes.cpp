@@ -14,11 +14,17 @@
 
 namespace wf {
 
-std::optional<glm::dvec3> direction_of(const glm::dvec3& v) {
-    const double length = glm::length(v);
-    if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
-    return v / length;
+namespace {
+
+// Translation, then rotation (a quaternion x, y, z, w, as glTF stores it, made
+// unit here), then scale: glTF's T R S.
+glm::dmat4 trs_matrix(const glm::dvec3& translation, const glm::dvec4& rotation, const glm::dvec3& scale) {
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translation);
+    m *= glm::mat4_cast(glm::normalize(glm::dquat(rotation.w, rotation.x, rotation.y, rotation.z))); // glm takes w first
+    return glm::scale(m, scale);
 }
+
+} // namespace
 
 glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where) {
     glm::dmat4 transform(1.0);
@@ -31,14 +37,9 @@ glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where)
         if (!node.rotation.empty() && node.rotation.size() != 4)
             fail(where, "rotation must have 4 numbers");
         if (!node.scale.empty() && node.scale.size() != 3) fail(where, "scale must have 3 numbers");
-        if (!node.translation.empty())
-            transform = glm::translate(transform, glm::make_vec3(node.translation.data()));
-        if (!node.rotation.empty()) { // glTF stores x, y, z, w; glm's constructor takes w first
-            const std::vector<double>& q = node.rotation;
-            transform *= glm::mat4_cast(glm::normalize(glm::dquat(q[3], q[0], q[1], q[2])));
-        }
-        if (!node.scale.empty())
-            transform = glm::scale(transform, glm::make_vec3(node.scale.data()));
+        transform = trs_matrix(node.translation.empty() ? glm::dvec3(0.0) : glm::make_vec3(node.translation.data()),
+                               node.rotation.empty() ? glm::dvec4(0, 0, 0, 1) : glm::make_vec4(node.rotation.data()),
+                               node.scale.empty() ? glm::dvec3(1.0) : glm::make_vec3(node.scale.data()));
     }
     for (int column = 0; column < 4; ++column)
         for (int row = 0; row < 4; ++row)
@@ -54,8 +55,10 @@ std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinyg
     const tinygltf::Value& attributes = extension->second.Get("attributes");
     if (!attributes.IsObject()) fail(at, "has no attributes");
     const auto accessor_of = [&](const char* name) {
+        if (!attributes.Has(name)) return -1;
         const tinygltf::Value& v = attributes.Get(name);
-        return v.IsNumber() ? v.GetNumberAsInt() : -1;
+        if (!v.IsInt() || v.GetNumberAsInt() < 0) fail(at, std::string(name) + " must be an accessor index");
+        return v.GetNumberAsInt();
     };
     const int translation = accessor_of("TRANSLATION"), rotation = accessor_of("ROTATION"),
               scale = accessor_of("SCALE");
@@ -71,16 +74,11 @@ std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinyg
         fail(at, "TRANSLATION and SCALE differ in count");
     const std::vector<glm::dvec4> rotations =
         rotation >= 0 ? read_rotations(model, rotation, count, at) : std::vector<glm::dvec4>();
-    std::vector<glm::dmat4> transforms(count, glm::dmat4(1.0));
-    for (size_t i = 0; i < count; ++i) {
-        glm::dmat4& m = transforms[i];
-        if (translation >= 0) m = glm::translate(m, glm::dvec3(translations[i]));
-        if (rotation >= 0) {
-            const glm::dvec4& q = rotations[i]; // x, y, z, w; glm's constructor takes w first
-            m *= glm::mat4_cast(glm::dquat(q.w, q.x, q.y, q.z));
-        }
-        if (scale >= 0) m = glm::scale(m, glm::dvec3(scales[i]));
-    }
+    std::vector<glm::dmat4> transforms(count);
+    for (size_t i = 0; i < count; ++i)
+        transforms[i] = trs_matrix(translation >= 0 ? glm::dvec3(translations[i]) : glm::dvec3(0.0),
+                                   rotation >= 0 ? rotations[i] : glm::dvec4(0, 0, 0, 1),
+                                   scale >= 0 ? glm::dvec3(scales[i]) : glm::dvec3(1.0));
     return transforms;
 }
 

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/mesh_placement.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -35,8 +36,5 @@ std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinyg
 // glTF cameras look down their local -Z with +Y up.
 SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& world, const std::string& where);
 
-// `v` scaled to unit length, or nothing where it has no direction (zero or not
-// finite).
-std::optional<glm::dvec3> direction_of(const glm::dvec3& v);
 
 } // namespace wf

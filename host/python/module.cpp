@@ -251,6 +251,7 @@ PYBIND11_MODULE(wavefront, m) {
     py::class_<PyScene>(m, "Scene", "A glTF scene, loaded and checked")
         .def_readonly("path", &PyScene::path)
         .def_property_readonly("triangles", [](const PyScene& s) { return s.scene.triangle_count(); })
+        .def_property_readonly("placed_triangles", [](const PyScene& s) { return s.scene.placed_triangle_count(); })
         .def_property_readonly("materials", [](const PyScene& s) { return s.scene.materials.size(); })
         .def_property_readonly("punctual_lights", [](const PyScene& s) { return s.scene.punctual_lights.size(); })
         .def_property_readonly("has_camera", [](const PyScene& s) { return s.scene.camera.has_value(); })

@@ -8,6 +8,7 @@
 
 #include "base/errors.h"
 #include "bvh/instance_bvh.h"
+#include "scene/mesh_placement.h"
 #include "device/layout_check.h"
 #include "integrator/megakernel_integrator.h"
 #include "integrator/path_pool.h"
@@ -48,7 +49,6 @@ unsigned lane_width(const DeviceInfo& device, const RenderSettings& settings, bo
     return device.native_float_width >= 8 && !gpu_kernels ? 8u : 1u;
 }
 
-
 // Rays a work-item traces at once (kernels/geometry/trace_width.h): as asked,
 // else two on a CPU where the scene's triangle blocks alone are more than the
 // device's cache holds. Two paid only there (bench/results/ray-throughput.md,
@@ -70,8 +70,15 @@ bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
 const Scene& scene_for_devices(const Scene& scene, const std::vector<const OpenClDevice*>& devices,
                                const RenderSettings& settings, std::optional<Scene>& flat) {
     if (scene.instances.empty()) return scene;
-    for (const OpenClDevice* device : devices)
-        if (gpu_kernels(device->info, settings)) return *(flat = flattened(scene));
+    for (const OpenClDevice* device : devices) {
+        if (!gpu_kernels(device->info, settings)) continue;
+        if (scene.placed_triangle_count() > size_t{WF_BVH_FIRST_MASK} + 1)
+            throw InputError("the scene's " + std::to_string(scene.placed_triangle_count()) +
+                             " placed triangles, written out for " + device->info.name +
+                             "'s kernels (a GPU's traversal walks one tree), exceed the BVH's 2^28; "
+                             "render on a CPU (--device cpu), which keeps its shared meshes once");
+        return *(flat = flattened(scene));
+    }
     return scene;
 }
 

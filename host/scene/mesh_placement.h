@@ -1,10 +1,12 @@
 // mesh_placement.h — a mesh's triangles in its own space, and their placement
 // in a scene's world space: what the glTF loader does for a mesh that one node
-// places, and what flattening a shared mesh does for each of its instances
-// (scene.h: flattened).
+// places, and what flattening a scene's shared meshes does for each of their
+// instances.
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -38,9 +40,18 @@ void place_mesh(const MeshTriangles& mesh, const glm::dmat4& world, Scene& out);
 // shared mesh's, to be placed again).
 MeshTriangles mesh_of(const Scene& scene, size_t first, size_t count);
 
+// The scene with every instance of a shared mesh written out in world space,
+// as the loader writes a mesh placed once: for devices whose traversal has
+// one level (a GPU's), and for comparing the two.
+Scene flattened(const Scene& scene);
+
+// `v` scaled to unit length, or nothing where it has no direction (zero or not
+// finite).
+std::optional<glm::dvec3> direction_of(const glm::dvec3& v);
+
 // A quarter of float range, so that the BVH's centroids (a sum of three
 // corners) and bounds extents (a difference of two) stay finite: past it the
 // builder computed inf * 0 (found by fuzzing).
-constexpr double kMaxCoordinate = 8.507059e37; // FLT_MAX / 4, rounded down
+constexpr double kMaxCoordinate = double(std::numeric_limits<float>::max()) / 4.0;
 
 } // namespace wf

@@ -1,11 +1,10 @@
 // scene.cpp — what scene.h declares beyond the structs: the bounds of placed
-// triangles, and flattening a scene's instances into world space.
+// triangles.
 #include "scene/scene.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/mesh_placement.h"
 
 namespace wf {
 
@@ -33,35 +32,18 @@ Bounds transformed_bounds(const Bounds& box, const glm::dmat4& transform) {
     return out;
 }
 
-Bounds Scene::bounds() const {
-    Bounds b = triangle_bounds(*this, 0, world_triangle_count());
-    for (const MeshInstance& instance : instances) {
-        const SharedMesh& mesh = shared_meshes[instance.mesh];
-        b.grow(transformed_bounds(triangle_bounds(*this, mesh.first, mesh.count), instance.object_to_world));
-    }
-    return b;
+std::vector<Bounds> shared_mesh_bounds(const Scene& scene) {
+    std::vector<Bounds> boxes;
+    for (const SharedMesh& mesh : scene.shared_meshes) boxes.push_back(triangle_bounds(scene, mesh.first, mesh.count));
+    return boxes;
 }
 
-Scene flattened(const Scene& scene) {
-    Scene flat = scene;
-    flat.shared_meshes.clear();
-    flat.instances.clear();
-    if (scene.shared_meshes.empty()) return flat;
-    const size_t world = scene.world_triangle_count();
-    const auto keep_corners = [world](auto& v) { v.resize(std::min(v.size(), 3 * world)); };
-    keep_corners(flat.positions);
-    keep_corners(flat.normals);
-    keep_corners(flat.uv0);
-    keep_corners(flat.uv1);
-    keep_corners(flat.tangents);
-    keep_corners(flat.colors);
-    flat.triangle_material.resize(world);
-    flat.triangle_mesh.resize(world);
-    std::vector<MeshTriangles> meshes;
-    for (const SharedMesh& mesh : scene.shared_meshes) meshes.push_back(mesh_of(scene, mesh.first, mesh.count));
-    for (const MeshInstance& instance : scene.instances)
-        place_mesh(meshes[instance.mesh], instance.object_to_world, flat);
-    return flat;
+Bounds Scene::bounds() const {
+    Bounds b = triangle_bounds(*this, 0, world_triangle_count());
+    const std::vector<Bounds> meshes = shared_mesh_bounds(*this);
+    for (const MeshInstance& instance : instances)
+        b.grow(transformed_bounds(meshes[instance.mesh], instance.object_to_world));
+    return b;
 }
 
 } // namespace wf

@@ -158,20 +158,21 @@ struct Scene {
             if (c != glm::vec4(1.0f)) return true;
         return false;
     }
-    // Of every placed triangle (instance_bvh.cpp: a shared mesh's box, placed).
+    // Holds every placed triangle: a shared mesh's box mapped by each
+    // instance, which for a turned mesh is larger than its triangles' (so the
+    // framing of a file without a camera differs a little from that of the
+    // scene written out).
     Bounds bounds() const;
 };
 
 // The box of the scene's triangles [first, first + count), in their own space.
 Bounds triangle_bounds(const Scene& scene, size_t first, size_t count);
 
+// Each shared mesh's box, in its own space.
+std::vector<Bounds> shared_mesh_bounds(const Scene& scene);
+
 // `box` mapped by `transform`: the box of its eight corners mapped, in double,
 // rounded outward to float.
 Bounds transformed_bounds(const Bounds& box, const glm::dmat4& transform);
-
-// The scene with every instance of a shared mesh written out in world space,
-// as the loader writes a mesh placed once: for devices whose traversal has
-// one level (a GPU's), and for comparing the two.
-Scene flattened(const Scene& scene);
 
 } // namespace wf

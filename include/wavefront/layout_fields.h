@@ -13,6 +13,7 @@
 #define WF_LAYOUT_MEMBERS(X)                                                                     \
     X(BvhNode, bounds) X(BvhNode, child)                                                           \
     X(Instance, object_to_world) X(Instance, world_to_object) X(Instance, root) X(Instance, handedness) \
+    X(Instance, error_scale) X(Instance, pad)                                                        \
     X(TriangleBlock, corners) X(TriangleBlock, light) X(TriangleBlock, material) X(TriangleBlock, pad) \
     X(TriangleNormals, n0) X(TriangleNormals, n1) X(TriangleNormals, n2)                          \
     X(TriangleTexcoords, uv0) X(TriangleTexcoords, uv1)                                           \

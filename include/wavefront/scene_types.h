@@ -38,8 +38,9 @@ typedef struct Instance {
     float object_to_world[3][4];
     float world_to_object[3][4];
     uint32_t root;
-    float handedness; /* -1 where the map mirrors: a tangent's w times this; else 1 */
-    uint32_t pad[2];
+    float handedness;  /* -1 where the map mirrors: a tangent's w times this; else 1 */
+    float error_scale; /* what map_point_error scales its bound by: the way back's rounding (geometry/instance_map.h) */
+    uint32_t pad;
 } Instance;
 
 /* Four triangles side by side, BVH positions 4b to 4b + 3 in block b, a lane

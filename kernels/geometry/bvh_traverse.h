@@ -100,7 +100,24 @@
  *
  * On the device every query takes a HitFilter (materials/alpha_mask.h): a hit
  * it rejects (a transparent texel of an alpha-masked material) is as if the
- * triangle were not there. The host's queries, for the tests, have none. */
+ * triangle were not there. The host's queries, for the tests, have none.
+ *
+ * Two levels (WF_TWO_LEVEL; host/bvh/instance_bvh.h). A scene with shared
+ * meshes has a top tree whose leaves are placements (Instance), one a leaf,
+ * each a mesh's own tree in the mesh's space under its node `root`. A visit
+ * of a top leaf maps the ray into the placement's space (enter_instance) and
+ * goes on down the mesh's tree on the same stack, above the top tree's
+ * entries; once the stack is back to where it entered, the ray is the world's
+ * again (leave_instance). The mapped direction is not made unit, so t along
+ * either ray is the same parameter, and the window's end and the pending
+ * entries cull in both trees alike. The promise above holds per placement:
+ * the selected hit is what testing every triangle of every placement against
+ * the ray mapped as enter_instance maps it, and selecting as above (the
+ * placement after the triangle index in the order), would give. Each tree is
+ * built for the whole WF_BVH_STACK_SIZE, so the stack holds twice that. The
+ * box test of the top tree sees the placements' boxes grown for the maps'
+ * rounding (instance_bvh.cpp says by how much, and where that falls short:
+ * rays from far beyond a placement stretched more than about 5 times). */
 #ifndef WF_BVH_TRAVERSE_H
 #define WF_BVH_TRAVERSE_H
 
@@ -431,9 +448,8 @@ typedef struct Traversal {
     int stack_size;
 #if WF_TWO_LEVEL
     float3 world_origin, world_direction; /* the ray as asked, kept while ray and box are a placement's */
-    int32_t instance;      /* the placement whose tree it is in; -1 in the top tree */
-    uint32_t instance_end; /* the end of the run of placements of the top tree's leaf it came from */
-    int instance_base;     /* the stack's size when it went into the placement's tree */
+    int32_t instance;  /* the placement whose tree it is in; -1 in the top tree */
+    int instance_base; /* the stack's size when it went into the placement's tree */
 #endif
 #if WF_GPU_TRAVERSAL
     uint32_t node; /* the node `child` was taken from (0: none yet), */
@@ -540,7 +556,6 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
     t->world_origin = origin;
     t->world_direction = direction;
     t->instance = -1;
-    t->instance_end = 0u;
     t->instance_base = 0;
 #endif
 #if WF_GPU_TRAVERSAL
@@ -554,8 +569,8 @@ WF_FORCE_INLINE void traversal_start(Traversal* t, WF_GLOBAL const BvhNode* node
 }
 
 #if WF_TWO_LEVEL
-/* Goes into the tree of placement i (a leaf of the top tree holds a run of
- * them): the ray mapped into its mesh's space, its direction not made unit,
+/* Goes into the tree of placement i (a leaf of the top tree holds one): the
+ * ray mapped into its mesh's space, its direction not made unit,
  * so that t along it is t along the ray as asked, and the window's end and
  * the pending entries mean the same in both trees. Its box ray pads by the
  * mesh's box, as the top tree's by the scene's. */
@@ -629,8 +644,7 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
         }
 #else
 #if WF_TWO_LEVEL
-        if (t->instance < 0 && WF_PLACEMENTS) { /* the top tree's leaf: a run of placements */
-            t->instance_end = end;
+        if (t->instance < 0 && WF_PLACEMENTS) { /* the top tree's leaf: one placement */
             enter_instance(t, nodes, WF_PLACEMENTS, first);
             return 0;
         }
@@ -713,14 +727,8 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
 #else
     for (;;) {
 #if WF_TWO_LEVEL
-        /* A placement's tree done: the next placement of its run, or back to the top tree. */
-        if (t->instance >= 0 && t->stack_size == t->instance_base) {
-            if ((uint32_t)t->instance + 1u < t->instance_end) {
-                enter_instance(t, nodes, WF_PLACEMENTS, (uint32_t)t->instance + 1u);
-                return 0;
-            }
-            leave_instance(t, nodes);
-        }
+        /* A placement's tree done: back to the top tree. */
+        if (t->instance >= 0 && t->stack_size == t->instance_base) leave_instance(t, nodes);
 #endif
         if (t->stack_size == 0) return 1;
         --t->stack_size;

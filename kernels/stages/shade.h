@@ -119,7 +119,8 @@ WF_INLINE SurfaceGeometry_x1 placed_surface_geometry(const Scene* scene, const A
     SurfaceGeometry_x1 s = surface_geometry_x1(scene, (int)a->triangle, a->b1, a->b2, vec_from_float3(direction));
     const float3 position = vec_to_float3(s.position);
     s.position_error =
-        vec_from_float3(map_point_error(placement->object_to_world, position, vec_to_float3(s.position_error)));
+        vec_from_float3(map_point_error(placement->object_to_world, position, vec_to_float3(s.position_error),
+                                        placement->error_scale));
     s.position = vec_from_float3(map_point(placement->object_to_world, position));
     s.geometric_normal =
         vec_from_float3(normalize(map_normal(placement->world_to_object, vec_to_float3(s.geometric_normal))));

@@ -15,6 +15,7 @@
 #include "device/device_scene.h"
 #include "geometry/bvh_traverse.h"
 #include "support/test_support.h"
+#include "scene/mesh_placement.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -86,28 +87,6 @@ struct PlacedScene {
     std::vector<std::vector<uint32_t>> positions; // by placement, its tree's BVH positions
 };
 
-TEST(InstanceBvh, SharedMeshesAreStoredOnce) {
-    const Scene scene = test::instanced_cornell();
-    ASSERT_EQ(scene.instances.size(), 4u);
-    const PlacedScene placed(scene);
-    // The world's triangles and one block: 32 triangles in all, not 22 + 4 x 10.
-    size_t stored = 0;
-    for (uint32_t t : placed.bvh.order) stored += t != kNoTriangle ? 1u : 0u;
-    EXPECT_EQ(stored, scene.triangle_count());
-    EXPECT_EQ(scene.placed_triangle_count(), scene.world_triangle_count() + 4 * scene.shared_meshes[0].count);
-    // Five placements: the world under the identity, and the four blocks, two of them mirrored or not.
-    ASSERT_EQ(placed.data.instances.size(), 5u);
-    int mirrored = 0;
-    for (const Instance& p : placed.data.instances) mirrored += p.handedness < 0.0f ? 1 : 0;
-    EXPECT_EQ(mirrored, 1);
-    // The scene's box holds the flattened scene's (a turned mesh's box, mapped, is larger than its triangles').
-    const Bounds flat = flattened(scene).bounds(), placed_box = scene.bounds();
-    for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_LE(placed_box.lo[axis], flat.lo[axis]) << axis;
-        EXPECT_GE(placed_box.hi[axis], flat.hi[axis]) << axis;
-    }
-}
-
 // A crowd: a mesh of random triangles placed 60 times, turned, stretched and
 // mirrored at random over [0, 550]^3, and a few world-space triangles, so that
 // the top tree has levels of its own.
@@ -134,6 +113,38 @@ Scene crowd() {
         scene.instances.push_back({0, m});
     }
     return scene;
+}
+
+// A scene built in code has no texture coordinates, tangents or colours:
+// written out, it still has none, and its triangles are the placed ones.
+TEST(InstanceBvh, ACrowdBuiltInCodeIsWrittenOut) {
+    const Scene scene = crowd();
+    const Scene flat = flattened(scene);
+    EXPECT_EQ(flat.triangle_count(), scene.placed_triangle_count());
+    EXPECT_TRUE(flat.uv0.empty() && flat.tangents.empty() && flat.colors.empty());
+    EXPECT_TRUE(flat.instances.empty());
+}
+
+TEST(InstanceBvh, SharedMeshesAreStoredOnce) {
+    const Scene scene = test::instanced_cornell();
+    ASSERT_EQ(scene.instances.size(), 4u);
+    const PlacedScene placed(scene);
+    // The world's triangles and one block: 32 triangles in all, not 22 + 4 x 10.
+    size_t stored = 0;
+    for (uint32_t t : placed.bvh.order) stored += t != kNoTriangle ? 1u : 0u;
+    EXPECT_EQ(stored, scene.triangle_count());
+    EXPECT_EQ(scene.placed_triangle_count(), scene.world_triangle_count() + 4 * scene.shared_meshes[0].count);
+    // Five placements: the world under the identity, and the four blocks, two of them mirrored or not.
+    ASSERT_EQ(placed.data.instances.size(), 5u);
+    int mirrored = 0;
+    for (const Instance& p : placed.data.instances) mirrored += p.handedness < 0.0f ? 1 : 0;
+    EXPECT_EQ(mirrored, 1);
+    // The scene's box holds the flattened scene's (a turned mesh's box, mapped, is larger than its triangles').
+    const Bounds flat = flattened(scene).bounds(), placed_box = scene.bounds();
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_LE(placed_box.lo[axis], flat.lo[axis]) << axis;
+        EXPECT_GE(placed_box.hi[axis], flat.hi[axis]) << axis;
+    }
 }
 
 class InstanceTraversal : public ::testing::TestWithParam<int> {};

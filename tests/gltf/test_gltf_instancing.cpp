@@ -3,6 +3,7 @@
 // the loader writes out when asked not to share; meshes that cannot be shared
 // (one placement, an emitter, a transform with no inverse) are written out.
 #include "gltf/gltf_document.h"
+#include "scene/mesh_placement.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -79,11 +80,15 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     json primitive = triangle_primitive(doc.add_vec3(kTriangle));
     const int translations = doc.add_vec3({0, 0, 0, 10, 0, 0, 0, 10, 0});
     const int scales = doc.add_vec3({1, 1, 1, 2, 2, 2, -1, 1, 1});
-    doc.add_mesh_node("grass", primitive,
-                      {{"translation", {0, 0, 5}},
-                       {"extensions",
-                        {{"EXT_mesh_gpu_instancing",
-                          {{"attributes", {{"TRANSLATION", translations}, {"SCALE", scales}}}}}}}});
+    // Unit quaternions x, y, z, w: none, none, a quarter turn about z (stored unnormalised, twice as long).
+    const float h = std::sqrt(0.5f);
+    const int rotations = doc.add_vec4({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 2 * h, 2 * h});
+    doc.add_mesh_node(
+        "grass", primitive,
+        {{"translation", {0, 0, 5}},
+         {"extensions",
+          {{"EXT_mesh_gpu_instancing",
+            {{"attributes", {{"TRANSLATION", translations}, {"ROTATION", rotations}, {"SCALE", scales}}}}}}}});
     doc.gltf["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     const std::string file = doc.write(dir_ / "grass.gltf");
     const Scene scene = load_gltf(file);
@@ -93,6 +98,9 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     ASSERT_EQ(flat.triangle_count(), 3u);
     expect_near(flat.positions[3 * 1 + 1], {12, 0, 5}); // instance 1: scaled by 2, then moved by (10, 0, 0) and (0, 0, 5)
     expect_near(flat.positions[3 * 2 + 0], {0, 10, 5});
+    // Instance 2: corner (0, 1, 0) mirrored in x stays put, turned a quarter about z goes to (-1, 0, 0), then
+    // moved; the mirror swaps corners 1 and 2, so it is the written-out triangle's corner 1.
+    expect_near(flat.positions[3 * 2 + 1], {-1, 10, 5});
     // Written out: the same triangles, the mirrored one's winding kept front-facing.
     const Scene written_out = load_gltf(file, LoadOptions{-1, false});
     ASSERT_EQ(written_out.triangle_count(), 3u);

@@ -5,6 +5,7 @@
 // builder they share is gltf_document.h.
 
 #include "gltf/gltf_document.h"
+#include "scene/mesh_placement.h"
 
 #include <glm/gtc/constants.hpp>
 

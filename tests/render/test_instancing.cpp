@@ -13,10 +13,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bvh/instance_bvh.h"
+#include "gltf/gltf_loader.h"
 #include "image/error_metrics.h"
 #include "render/renderer.h"
 #include "scene/environment_map.h"
 #include "support/test_support.h"
+#include "scene/mesh_placement.h"
 
 namespace wf {
 namespace {
@@ -46,6 +48,37 @@ TEST(Instancing, RendersAsTheSceneWrittenOut) {
     test::report_measured(line.str());
     EXPECT_LT(difference, 1e-5 * noise); // 1e-9 against 0.03 measured; the geometric normal mapped as a vector, 3e-5
     EXPECT_GT(noise, 1e-4); // enough noise that the bound above means something
+}
+
+// Normal maps: a placement's tangents are mapped with its surface, a mirror
+// flipping their handedness (materials/surface_material.h), so a normal-mapped
+// mesh placed twice, once mirrored and turned, shades as its written-out self.
+TEST(Instancing, NormalMappedPlacementsRenderAsTheSceneWrittenOut) {
+    Scene scene = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/NormalTangentTest/NormalTangentTest.gltf",
+                            LoadOptions{-1, false});
+    ASSERT_TRUE(scene.instances.empty());
+    const Bounds box = scene.bounds();
+    const glm::dvec3 centre(box.center()), extent(box.extent());
+    scene.shared_meshes.push_back({0u, uint32_t(scene.triangle_count())});
+    const glm::dmat4 to_origin = glm::translate(glm::dmat4(1.0), -centre);
+    scene.instances.push_back({0u, glm::translate(glm::dmat4(1.0), glm::dvec3(-0.6 * extent.x, 0, 0)) * to_origin});
+    scene.instances.push_back(
+        {0u, glm::rotate(glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.6 * extent.x, 0, 0)),
+                                    glm::dvec3(-1.0, 1.0, 1.0)),
+                         0.4, glm::dvec3(0.0, 1.0, 0.0)) *
+                 to_origin});
+    scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    scene.camera = test::camera_looking(glm::vec3(0.0f, 0.0f, 2.5f * float(extent.x)), {0, 0, -1}, {0, 1, 0}, 0.8f);
+    const RenderOutput placed = render(scene, RenderSettings{});
+    const RenderOutput written_out = render(flattened(scene), RenderSettings{});
+    const double noise = estimate_relmse(written_out.film.mean, written_out.film.variance_of_mean);
+    const double difference = compare_images(placed.film.mean, written_out.film.mean).relmse;
+    std::ostringstream line;
+    line << "NormalTangentTest placed twice, once mirrored, against its written-out self: relMSE " << difference
+         << ", the render's own noise " << noise;
+    test::report_measured(line.str());
+    EXPECT_LT(difference, 1e-5 * noise);
+    EXPECT_GT(noise, 1e-4);
 }
 
 // Every schedule and the megakernel: the same bytes (test_determinism.cpp's
@@ -97,6 +130,7 @@ TEST(Instancing, AWhiteFurnaceFarFromTheOriginReturnsTheSky) {
     place({30, 30, 95.2}, glm::dvec3(0.01), 1.0);    // tiny, above it, seen close up by the second camera
     place({-140, 0, 0}, {-30.0, 20.0, 30.0}, 2.0);   // mirrored and stretched
     place({0, 130, 0}, {50.0, 5.0, 50.0}, 0.7);      // a flattened disc
+    place({130, 0, 0}, {30.0, 30.0, 0.3}, 0.4);      // a turned coin, stretched 100 times
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     RenderSettings settings;
     settings.max_depth = WF_UNLIMITED_DEPTH;

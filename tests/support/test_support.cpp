@@ -102,8 +102,11 @@ Scene instanced_cornell() {
     size_t count = 0;
     while (first + count < box.triangle_count() && box.triangle_mesh[first + count] == block_mesh) ++count;
     Scene scene = box;
-    scene.positions.clear(), scene.normals.clear(), scene.uv0.clear(), scene.uv1.clear(), scene.tangents.clear(),
-        scene.colors.clear(), scene.triangle_material.clear(), scene.triangle_mesh.clear();
+    for (auto* corners : {&scene.normals, &scene.positions}) corners->clear();
+    for (auto* corners : {&scene.uv0, &scene.uv1}) corners->clear();
+    for (auto* corners : {&scene.tangents, &scene.colors}) corners->clear();
+    scene.triangle_material.clear();
+    scene.triangle_mesh.clear();
     place_mesh(mesh_of(box, 0, first), glm::dmat4(1.0), scene);
     place_mesh(mesh_of(box, first + count, box.triangle_count() - first - count), glm::dmat4(1.0), scene);
     // The block in its own space: standing on y = 0 about the origin.
