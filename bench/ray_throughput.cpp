@@ -241,7 +241,7 @@ void write_json(const std::string& path, const Report& r) {
 int run(const Options& options) {
     // Every placement written out, one tree on both sides: the hits are
     // compared with Embree's triangle by triangle.
-    const Scene scene = load_gltf(options.scene, LoadOptions{-1, false});
+    const Scene scene = load_gltf(options.scene, LoadOptions{-1, Instancing::Off});
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
     const OpenClDevice device = open_device(options.device);
     check_shared_layouts(device);

@@ -297,10 +297,15 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
         ->needs(env)
         ->group(sampling);
     add_cache_dir(render, o.cache_dir);
-    render.add_flag_function("--no-instancing", [&o](int64_t) { o.instancing = false; },
-                    with_default("Write out every placement of a mesh that several nodes place, one tree of "
-                                 "world-space triangles, instead of keeping the mesh once under a tree of its "
-                                 "instances", "off"));
+    render.add_option_function<std::string>(
+              "--instancing",
+              [&o](const std::string& name) { o.instancing = static_cast<Instancing>(index_of(kInstancingNames, name)); },
+              with_default("Which meshes that several nodes place are kept once, under a tree of their "
+                           "instances, the rest written out at each placement: all, large (those whose copies "
+                           "would hold 65536 triangles or more; smaller ones render faster written out) or off",
+                           kInstancingNames[static_cast<size_t>(o.instancing)]))
+        ->check(CLI::IsMember(names_of(kInstancingNames)))
+        ->type_name("MODE");
     render.add_flag_function("--no-specialize", [&s](int64_t) { s.specialize = false; },
                     with_default("Compile the generic kernels, every feature on, instead of those for the scene's "
                                  "features", "off"));

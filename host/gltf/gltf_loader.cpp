@@ -251,17 +251,22 @@ private:
 
     // The meshes placed: in world space, each where it is placed, but for a
     // mesh that two or more placements can share, which is kept once after
-    // the rest and placed by instances (LoadOptions::instancing).
-    void place_meshes(bool instancing) {
+    // the rest and placed by instances where `instancing` says so.
+    void place_meshes(Instancing instancing) {
         std::vector<bool> sharing(placements_.size(), false);
         std::vector<size_t> sharers(model_.meshes.size(), 0);
-        for (size_t i = 0; i < placements_.size() && instancing; ++i)
+        for (size_t i = 0; i < placements_.size() && instancing != Instancing::Off; ++i)
             if (can_share(placements_[i])) {
                 sharing[i] = true;
                 ++sharers[placements_[i].mesh];
             }
+        const auto shared = [&](size_t mesh) {
+            const size_t copies = sharers[mesh] - 1; // those beyond the first, which sharing saves
+            return sharers[mesh] >= 2 && (instancing == Instancing::All ||
+                                          copies * mesh_triangles(mesh).materials.size() >= kLargeSharedTriangles);
+        };
         for (size_t i = 0; i < placements_.size(); ++i) {
-            sharing[i] = sharing[i] && sharers[placements_[i].mesh] >= 2;
+            sharing[i] = sharing[i] && shared(placements_[i].mesh);
             if (!sharing[i]) flatten(placements_[i]);
         }
         constexpr uint32_t kNotShared = ~0u;

@@ -8,6 +8,8 @@
 // fault, the mesh.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,11 +17,19 @@
 
 namespace wf {
 
+// Which meshes that several nodes place are kept once and placed by
+// instances (Scene::shared_meshes), the rest written out in world space at
+// each placement: none; those whose copies beyond the first would hold
+// kLargeSharedTriangles or more (a small mesh renders faster written out, its
+// copies cheap: NegativeScaleTest's 3.9 K triangles, kept once, rendered
+// 0.81-0.83x as fast, bench/results/ray-throughput.md); or all.
+enum class Instancing { Off, Large, All };
+constexpr std::array<const char*, 5> kInstancingNames = {"off", "large", "all", nullptr, nullptr};
+constexpr size_t kLargeSharedTriangles = 65536;
+
 struct LoadOptions {
     int camera_index = -1; // -1: the first perspective camera in the file, if any
-    // A mesh that several nodes place is kept once and placed by instances
-    // (Scene::shared_meshes); false writes every placement out in world space.
-    bool instancing = true;
+    Instancing instancing = Instancing::Large;
 };
 
 // Loads a .gltf or .glb. Throws InputError with a one-line message that names

@@ -49,7 +49,7 @@ ImageOptions image_options(const RenderOptions& o, ImageSize size) {
             {"camera", o.look_at ? "look-at" : o.camera < 0 ? "first" : std::to_string(o.camera)},
             {"look-at", o.look_at ? look_at_text(*o.look_at) : "none"},
             {"fov", o.fov ? std::to_string(*o.fov) : "the camera's"},
-            {"instancing", o.instancing ? "on" : "off"},
+            {"instancing", kInstancingNames[static_cast<size_t>(o.instancing)]},
             {"seed", std::to_string(s.seed)},
             {"max-depth", s.max_depth == WF_UNLIMITED_DEPTH ? "unlimited" : std::to_string(s.max_depth)},
             {"light-sampling", choice_name(kLightSamplingNames, s.light_sampling)},

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "gltf/gltf_loader.h"
 #include "integrator/render_settings.h"
 #include "render/progress_options.h"
 
@@ -20,7 +21,7 @@ struct RenderOptions {
     uint32_t width = 0;  // 0: from the camera's aspect
     uint32_t height = 0;
     int camera = -1;     // -1: the file's first perspective camera
-    bool instancing = true; // a mesh several nodes place kept once (LoadOptions::instancing)
+    Instancing instancing = Instancing::Large; // which meshes several nodes place are kept once (gltf_loader.h)
     std::optional<std::array<float, 9>> look_at; // eye, target, up: a camera of the command line's instead
     std::optional<float> fov;                    // vertical, degrees: the camera's own when not given
     std::string device;  // empty: the first GPU, else the first device

@@ -27,12 +27,17 @@ GltfDocument placed_triangle(const std::vector<json>& placements, bool emits = f
     return doc;
 }
 
+// Every mesh several nodes place kept once, however small.
+const LoadOptions kShareAll{-1, Instancing::All};
+
 const std::vector<json> kThreePlacements = {
     json::object(), {{"translation", {5, 0, 0}}}, {{"scale", {-1, 2, 1}}, {"rotation", {0, 0.6, 0, 0.8}}}};
 
 TEST_F(GltfLoaderTest, MeshPlacedByThreeNodesIsKeptOnce) {
     const std::string file = placed_triangle(kThreePlacements).write(dir_ / "three.gltf");
-    const Scene scene = load_gltf(file);
+    // By default a mesh this small is written out: its copies are cheap, and render faster so.
+    EXPECT_TRUE(load_gltf(file).instances.empty());
+    const Scene scene = load_gltf(file, kShareAll);
     expect_well_formed(scene);
     EXPECT_EQ(scene.triangle_count(), 1u);
     ASSERT_EQ(scene.shared_meshes.size(), 1u);
@@ -42,7 +47,7 @@ TEST_F(GltfLoaderTest, MeshPlacedByThreeNodesIsKeptOnce) {
     EXPECT_EQ(scene.placed_triangle_count(), 3u);
     expect_near(scene.positions[1], {1, 0, 0}); // in the mesh's own space
     // Written out, in walk order: what flattening the instances gives.
-    const Scene written_out = load_gltf(file, LoadOptions{-1, false});
+    const Scene written_out = load_gltf(file, LoadOptions{-1, Instancing::Off});
     const Scene flat = flattened(scene);
     EXPECT_TRUE(written_out.instances.empty());
     ASSERT_EQ(written_out.triangle_count(), 3u);
@@ -57,16 +62,16 @@ TEST_F(GltfLoaderTest, MeshPlacedByThreeNodesIsKeptOnce) {
 
 TEST_F(GltfLoaderTest, MeshesThatCannotBeSharedAreWrittenOut) {
     // Placed once.
-    Scene scene = load_gltf(placed_triangle({json::object()}).write(dir_ / "once.gltf"));
+    Scene scene = load_gltf(placed_triangle({json::object()}).write(dir_ / "once.gltf"), kShareAll);
     EXPECT_TRUE(scene.instances.empty());
     // An emitter: each placement is a light of its own.
-    scene = load_gltf(placed_triangle(kThreePlacements, true).write(dir_ / "lamps.gltf"));
+    scene = load_gltf(placed_triangle(kThreePlacements, true).write(dir_ / "lamps.gltf"), kShareAll);
     EXPECT_TRUE(scene.instances.empty());
     EXPECT_EQ(scene.triangle_count(), 3u);
     // A placement with no inverse is written out; the two others still share.
     std::vector<json> placements = kThreePlacements;
     placements[1]["scale"] = {0, 1, 1};
-    scene = load_gltf(placed_triangle(placements).write(dir_ / "flat.gltf"));
+    scene = load_gltf(placed_triangle(placements).write(dir_ / "flat.gltf"), kShareAll);
     expect_well_formed(scene);
     EXPECT_EQ(scene.instances.size(), 2u);
     EXPECT_EQ(scene.world_triangle_count(), 1u);
@@ -91,7 +96,7 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
             {{"attributes", {{"TRANSLATION", translations}, {"ROTATION", rotations}, {"SCALE", scales}}}}}}}});
     doc.gltf["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
     const std::string file = doc.write(dir_ / "grass.gltf");
-    const Scene scene = load_gltf(file);
+    const Scene scene = load_gltf(file, kShareAll);
     EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
     ASSERT_EQ(scene.instances.size(), 3u);
     const Scene flat = flattened(scene);
@@ -102,7 +107,7 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     // moved; the mirror swaps corners 1 and 2, so it is the written-out triangle's corner 1.
     expect_near(flat.positions[3 * 2 + 1], {-1, 10, 5});
     // Written out: the same triangles, the mirrored one's winding kept front-facing.
-    const Scene written_out = load_gltf(file, LoadOptions{-1, false});
+    const Scene written_out = load_gltf(file, LoadOptions{-1, Instancing::Off});
     ASSERT_EQ(written_out.triangle_count(), 3u);
     for (size_t t = 0; t < 3; ++t) EXPECT_GT(geometric_normal(written_out, t).z, 0.0f) << t;
     // An accessor of the wrong count is named.

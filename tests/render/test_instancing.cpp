@@ -55,7 +55,7 @@ TEST(Instancing, RendersAsTheSceneWrittenOut) {
 // mesh placed twice, once mirrored and turned, shades as its written-out self.
 TEST(Instancing, NormalMappedPlacementsRenderAsTheSceneWrittenOut) {
     Scene scene = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/NormalTangentTest/NormalTangentTest.gltf",
-                            LoadOptions{-1, false});
+                            LoadOptions{-1, Instancing::Off});
     ASSERT_TRUE(scene.instances.empty());
     const Bounds box = scene.bounds();
     const glm::dvec3 centre(box.center()), extent(box.extent());

@@ -94,7 +94,7 @@ void add_smooth_sphere(Scene& scene, uint32_t material, int rings, int segments)
 }
 
 Scene instanced_cornell() {
-    const Scene box = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf", LoadOptions{-1, false});
+    const Scene box = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf", LoadOptions{-1, Instancing::Off});
     const size_t block_mesh =
         size_t(std::find(box.mesh_names.begin(), box.mesh_names.end(), "short_block") - box.mesh_names.begin());
     const size_t first = size_t(std::find(box.triangle_mesh.begin(), box.triangle_mesh.end(), block_mesh) -
