@@ -113,6 +113,8 @@ Bvh build_scene_bvh(const Scene& scene) {
     Bvh bvh = build_box_bvh(boxes);
     const std::vector<uint32_t> top_order = std::move(bvh.order);
     bvh.order.clear();
+    const int top_depth = bvh.depth; // the deepest path goes through the top tree into the deepest mesh's
+    bvh.depth = 0;
 
     // Each tree once, after the top tree: the world's, then the meshes'.
     const uint32_t world_root = world ? append_tree(bvh, scene, 0, scene.world_triangle_count()) : 0u;
@@ -123,6 +125,7 @@ Bvh build_scene_bvh(const Scene& scene) {
         p.root = world && i == 0 ? world_root : mesh_root[scene.instances[i - (world ? 1 : 0)].mesh];
         bvh.instances.push_back(p);
     }
+    bvh.depth += top_depth;
     return bvh;
 }
 

@@ -39,7 +39,10 @@ const std::string& scene_path() {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
-        wf::Scene scene = wf::load_gltf_bytes(scene_path(), std::vector<unsigned char>(data, data + size));
+        // Every mesh several nodes place kept once, however small, so that the
+        // mutator's duplicated nodes and links reach the instancing paths.
+        wf::Scene scene = wf::load_gltf_bytes(scene_path(), std::vector<unsigned char>(data, data + size),
+                                              wf::LoadOptions{-1, wf::Instancing::All});
         wf::light_unlit_scene(scene);
         // load_gltf promises at least one triangle with finite corners, and
         // placements it can invert, which is what build_scene_bvh requires;
