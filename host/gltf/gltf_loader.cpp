@@ -18,14 +18,9 @@
 // together.
 #include "gltf/gltf_loader.h"
 
-#include <algorithm>
-#include <array>
-#include <map>
 #include <cmath>
-#include <limits>
+#include <map>
 #include <optional>
-
-#include <glm/gtc/matrix_inverse.hpp>
 
 #include "base/errors.h"
 #include "gltf/gltf_diagnostics.h"

@@ -112,7 +112,8 @@ typedef struct Arrival {
  * then taken to the world, the point's error bound grown by the map's
  * rounding (geometry/instance_map.h), the normals by the inverse transpose and
  * made unit again. The inverse transpose keeps a normal's side, so the front
- * face is the mesh's. The area stays the mesh's: placements never emit. */
+ * face is the mesh's. The area stays the mesh's, which is the world's for
+ * the one placement whose triangles may emit: the world's, under the identity. */
 WF_INLINE SurfaceGeometry_x1 placed_surface_geometry(const Scene* scene, const Arrival* a) {
     __global const Instance* placement = scene->instances + a->instance;
     const float3 direction = map_vector(placement->world_to_object, a->direction);
