@@ -245,6 +245,9 @@ BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions) {
 
 BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes) {
     if (boxes.empty()) throw std::invalid_argument("build_bvh: no boxes");
+    if (boxes.size() > size_t{WF_BVH_FIRST_MASK} + 1)
+        throw std::invalid_argument("build_bvh: " + std::to_string(boxes.size()) +
+                                    " boxes exceed what a leaf's child word can index");
     std::vector<PrimRef> prims(boxes.size());
     for (size_t i = 0; i < boxes.size(); ++i) {
         const Bounds& b = boxes[i];

@@ -13,7 +13,7 @@
 // node's visit, which is what the collapse makes of most of them. But a child
 // left unopened, when its node is full, becomes a node of its own, a whole
 // visit; and at the bottom of the tree most of those would hold two leaves.
-// So such a child of at most kMaxLeafRun triangles is priced again, its root
+// So such a child of at most max_run triangles (kMaxLeafRun) is priced again, its root
 // at kNodeCost, and becomes one leaf (tested four triangles at a time) where
 // that is no dearer. Besides the time, it saves the memory of those nodes.
 //

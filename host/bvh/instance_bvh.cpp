@@ -43,11 +43,12 @@ Instance placement(const glm::dmat4& object_to_world) {
     store_rows(p.object_to_world, object_to_world);
     store_rows(p.world_to_object, glm::inverse(object_to_world));
     p.handedness = glm::determinant(glm::dmat3(object_to_world)) < 0.0 ? -1.0f : 1.0f;
-    // The hit's own rounding (the 2), and the way back, when a ray leaving
-    // the point is mapped into the mesh's space again: its rounding and the
-    // stored inverse's departure from the exact one, each carried back to the
-    // world through the stretch (the 4 covers both, with room).
-    p.error_scale = float(2.0 + 4.0 * stretch(p));
+    // The map's own rounding of the hit (the 2), and the way back, when a
+    // ray leaving the point is mapped into the mesh's space again: its
+    // rounding and the stored inverse's departure from the exact one, each
+    // carried back to the world through the stretch (the 4 covers both, with
+    // room). The identity's maps are exact: no rounding to cover.
+    p.error_scale = object_to_world == glm::dmat4(1.0) ? 0.0f : float(2.0 + 4.0 * stretch(p));
     return p;
 }
 
@@ -113,8 +114,14 @@ Bvh build_scene_bvh(const Scene& scene) {
     Bvh bvh = build_box_bvh(boxes);
     const std::vector<uint32_t> top_order = std::move(bvh.order);
     bvh.order.clear();
-    const int top_depth = bvh.depth; // the deepest path goes through the top tree into the deepest mesh's
+    // The deepest path goes through the top tree into the deepest mesh's,
+    // less the mesh's node 0, which holds its box and is no level of its own.
+    const int top_depth = bvh.depth - 1;
     bvh.depth = 0;
+    for (const BvhNode& node : bvh.nodes) // traversal enters a top leaf's `first` alone
+        for (uint32_t child : node.child)
+            if ((child & WF_BVH_LEAF) && (child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT != 0u)
+                throw std::logic_error("build_scene_bvh: a top leaf holds more than one placement");
 
     // Each tree once, after the top tree: the world's, then the meshes'.
     const uint32_t world_root = world ? append_tree(bvh, scene, 0, scene.world_triangle_count()) : 0u;

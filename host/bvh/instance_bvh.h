@@ -5,13 +5,13 @@
 // Memory grows with the unique triangles, not the placed ones.
 //
 // Promises: node 0 holds the box of every placement over the top tree; the
-// top tree's leaves are runs of `instances`, each placement's `root` a node
+// top tree's leaves hold one entry of `instances` each, each placement's `root` a node
 // that holds its mesh's box over the top of the mesh's tree, as node 0 holds
 // the scene's in a one-level tree (bvh_builder.h promises the rest of each
 // tree); the meshes' trees follow the top tree, their BVH positions side by
 // side in `order`, each tree's in whole blocks. A placement's box holds its
-// mesh's box mapped, grown so that the rounding of the ray mapped into the
-// mesh's space cannot carry a hit outside it. A scene without shared meshes
+// mesh's box mapped, grown for the rounding of the ray mapped into the mesh's
+// space (instance_bvh.cpp says how far that holds). A scene without shared meshes
 // gets build_bvh's one-level tree, unchanged. Deterministic.
 #pragma once
 

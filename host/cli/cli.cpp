@@ -302,7 +302,8 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
               [&o](const std::string& name) { o.instancing = static_cast<Instancing>(index_of(kInstancingNames, name)); },
               with_default("Which meshes that several nodes place are kept once, under a tree of their "
                            "instances, the rest written out at each placement: all, large (those whose copies "
-                           "would hold 65536 triangles or more; smaller ones render faster written out) or off",
+                           "beyond the first would hold " + std::to_string(kLargeSharedTriangles) +
+                               " triangles or more; smaller ones render faster written out) or off",
                            kInstancingNames[static_cast<size_t>(o.instancing)]))
         ->check(CLI::IsMember(names_of(kInstancingNames)))
         ->type_name("MODE");

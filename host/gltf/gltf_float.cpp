@@ -19,6 +19,13 @@ float to_float(double value, const std::string& where, const std::string& what) 
     return converted;
 }
 
+bool in_float_range(const glm::dmat4& matrix) {
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 4; ++row)
+            if (!std::isfinite(static_cast<float>(matrix[column][row]))) return false;
+    return true;
+}
+
 void check_float_range(const glm::dmat4& matrix, const std::string& where, const std::string& what) {
     for (int column = 0; column < 4; ++column)
         for (int row = 0; row < 4; ++row)

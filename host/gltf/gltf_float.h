@@ -18,5 +18,7 @@ float to_float(double value, const std::string& where, const std::string& what);
 
 // Every entry of a matrix that will be multiplied out in float; as to_float.
 void check_float_range(const glm::dmat4& matrix, const std::string& where, const std::string& what);
+// Whether every entry is finite as a float: what check_float_range checks, without a message to build.
+bool in_float_range(const glm::dmat4& matrix);
 
 } // namespace wf

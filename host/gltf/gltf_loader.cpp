@@ -173,7 +173,7 @@ private:
             if (instances.empty()) placements_.push_back({size_t(node.mesh), world, index, -1});
             for (size_t i = 0; i < instances.size(); ++i) { // EXT_mesh_gpu_instancing: each its own placement
                 const Placement placed{size_t(node.mesh), world * instances[i], index, int64_t(i)};
-                check_float_range(placed.world, where_of(placed), "transform");
+                if (!in_float_range(placed.world)) check_float_range(placed.world, where_of(placed), "transform");
                 placements_.push_back(placed);
             }
         }

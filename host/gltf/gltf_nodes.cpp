@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gltf/gltf_accessors.h"
+#include "scene/mesh_placement.h"
 #include "gltf/gltf_diagnostics.h"
 #include "gltf/gltf_float.h"
 

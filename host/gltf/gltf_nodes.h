@@ -11,7 +11,6 @@
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
 
-#include "scene/mesh_placement.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -35,6 +34,5 @@ std::vector<glm::dmat4> mesh_instances(const tinygltf::Model& model, const tinyg
 
 // glTF cameras look down their local -Z with +Y up.
 SceneCamera convert_camera(const tinygltf::Camera& camera, const glm::dmat4& world, const std::string& where);
-
 
 } // namespace wf

@@ -45,6 +45,7 @@ namespace {
 struct PyScene {
     std::string path;
     int camera = -1;
+    Instancing instancing = Instancing::Large;
     Scene scene;
 };
 
@@ -131,6 +132,12 @@ PyResult render(py::object scene, std::optional<py::function> progress, const py
         if (parsed.camera != camera)
             throw InputError("render: camera " + std::to_string(parsed.camera) + " is not the one " + path +
                              " was loaded with (" + std::to_string(camera) + "); load it again with that camera");
+        const Instancing instancing = scene.cast<const PyScene&>().instancing;
+        if (!given("instancing")) parsed.instancing = instancing;
+        if (parsed.instancing != instancing)
+            throw InputError(std::string("render: instancing ") + kInstancingNames[size_t(parsed.instancing)] +
+                             " is not the one " + path + " was loaded with (" + kInstancingNames[size_t(instancing)] +
+                             "); load it again with that instancing");
     }
 
     PyResult result;
@@ -261,11 +268,15 @@ PYBIND11_MODULE(wavefront, m) {
         });
     m.def(
         "load_scene",
-        [](const std::filesystem::path& file, int camera) {
+        [](const std::filesystem::path& file, int camera, const std::string& instancing) {
             const std::string path = file.string();
-            return PyScene{path, camera, load_gltf(path, LoadOptions{camera})};
+            const std::optional<uint32_t> mode = choice_value(kInstancingNames, instancing);
+            if (!mode) throw InputError("load_scene: instancing '" + instancing + "' is not one of off, large, all");
+            const auto chosen = static_cast<Instancing>(*mode);
+            return PyScene{path, camera, chosen, load_gltf(path, LoadOptions{camera, chosen})};
         },
-        py::arg("path"), py::arg("camera") = -1, "Loads a .gltf or .glb file; camera=-1 is its first camera");
+        py::arg("path"), py::arg("camera") = -1, py::arg("instancing") = "large",
+        "Loads a .gltf or .glb file; camera=-1 is its first camera; instancing as render's");
 
     py::class_<RenderStats>(m, "Stats", "What a render did: counts, kernel times, queue counters")
         .def_readonly("seconds", &RenderStats::seconds, "wall time rendering")

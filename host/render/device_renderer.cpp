@@ -76,7 +76,8 @@ const Scene& scene_for_devices(const Scene& scene, const std::vector<const OpenC
             throw InputError("the scene's " + std::to_string(scene.placed_triangle_count()) +
                              " placed triangles, written out for " + device->info.name +
                              "'s kernels (a GPU's traversal walks one tree), exceed the BVH's 2^28; "
-                             "render on a CPU (--device cpu), which keeps its shared meshes once");
+                             "render with a CPU's kernels (--kernels cpu, or auto on a CPU device), which keep "
+                             "its shared meshes once");
         return *(flat = flattened(scene));
     }
     return scene;

@@ -2,9 +2,8 @@
 // triangles.
 #include "scene/scene.h"
 
-#include <algorithm>
 #include <cmath>
-
+#include <limits>
 
 namespace wf {
 

@@ -14,7 +14,6 @@
 #include "base/output_files.h"
 #include "film/partial_render.h"
 #include "gltf/gltf_loader.h"
-#include "scene/mesh_placement.h"
 #include "image/denoiser.h"
 #include "image/image_io.h"
 #include "render/progressive_render.h"
@@ -69,9 +68,7 @@ RenderSummary run_render(const RenderOptions& options, std::ostream& out, std::o
     // Before anything is read or written: a render that cannot be denoised is not begun.
     if (options.denoise) denoiser_library();
     check_outputs(options, hooks.write_image);
-    // A scene loaded before (Python's) is written out here where --instancing off asks, as loading would have.
-    Scene scene = hooks.scene ? (options.instancing != Instancing::Off ? *hooks.scene : flattened(*hooks.scene))
-                              : load_gltf(options.scene, LoadOptions{options.camera, options.instancing});
+    Scene scene = hooks.scene ? *hooks.scene : load_gltf(options.scene, LoadOptions{options.camera, options.instancing});
     ready_for_render(scene, options, log);
     const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const std::string& w : scene.warnings) log << "warning: " << options.scene << ": " << w << "\n";

@@ -30,7 +30,7 @@ typedef struct BvhNode {
 
 /* A placement of a shared mesh (host/bvh/instance_bvh.h). In a two-level
  * tree, node 0 holds the box of every placement over the top tree, whose
- * leaves are runs of placements, [first, first + count) of this buffer; each
+ * leaves hold one placement each, entry `first` of this buffer; each
  * placement's `root` holds its mesh's box over that mesh's own tree, as node 0
  * holds the scene's, in the mesh's space. The maps are 3x4 matrices, row r
  * giving coordinate r as m[r][0] x + m[r][1] y + m[r][2] z + m[r][3]. */

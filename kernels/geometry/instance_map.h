@@ -34,19 +34,22 @@ WF_INLINE float3 map_normal(WF_GLOBAL const float (*m)[4], float3 n) {
 }
 
 /* The error bound of map_point(m, p) for a p known within +-error, per
- * component (pbrt-v4's Transform of a Point3fi): the rounding of the three
- * products and three sums, gamma_3 of the terms' magnitudes, and the error
- * carried through the linear part; times `scale` (Instance.error_scale,
- * host/bvh/instance_bvh.cpp), so that a ray leaving the point along a bound
- * this wide stays clear of the surface once it is mapped into the mesh's
- * space again (bvh_traverse.h), that map's rounding included. */
+ * component (pbrt-v4's Transform of a Point3fi): the error carried through
+ * the linear part, and the rounding of the three products and three sums,
+ * gamma_3 of the terms' magnitudes, times `scale` (Instance.error_scale,
+ * host/bvh/instance_bvh.cpp): enough that a ray leaving the point along a
+ * bound this wide stays clear of the surface once it is mapped into the
+ * mesh's space again (bvh_traverse.h), that map's rounding and the stored
+ * inverse's included; 0 for the identity, whose maps are exact. The carried
+ * error needs no such factor: mapped back, a world offset of |M| error along
+ * the normal clears the mesh's own bound. */
 WF_INLINE float3 map_point_error(WF_GLOBAL const float (*m)[4], float3 p, float3 error, float scale) {
     const float g3 = rounding_gamma(3);
     float e[3];
     for (int r = 0; r < 3; ++r) {
         const float terms = fabs(m[r][0] * p.x) + fabs(m[r][1] * p.y) + fabs(m[r][2] * p.z) + fabs(m[r][3]);
         const float carried = fabs(m[r][0]) * error.x + fabs(m[r][1]) * error.y + fabs(m[r][2]) * error.z;
-        e[r] = scale * (g3 * terms + (1.0f + g3) * carried);
+        e[r] = (1.0f + g3) * carried + scale * g3 * terms;
     }
     return make_float3(e[0], e[1], e[2]);
 }

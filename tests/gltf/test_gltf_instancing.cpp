@@ -85,9 +85,10 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     json primitive = triangle_primitive(doc.add_vec3(kTriangle));
     const int translations = doc.add_vec3({0, 0, 0, 10, 0, 0, 0, 10, 0});
     const int scales = doc.add_vec3({1, 1, 1, 2, 2, 2, -1, 1, 1});
-    // Unit quaternions x, y, z, w: none, none, a quarter turn about z (stored unnormalised, twice as long).
+    // Unit quaternions x, y, z, w: none, none, a quarter turn about z the other way round (a negative
+    // component, stored unnormalised, twice as long: no clamp at -1 may bend it).
     const float h = std::sqrt(0.5f);
-    const int rotations = doc.add_vec4({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 2 * h, 2 * h});
+    const int rotations = doc.add_vec4({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -2 * h, 2 * h});
     doc.add_mesh_node(
         "grass", primitive,
         {{"translation", {0, 0, 5}},
@@ -103,9 +104,9 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     ASSERT_EQ(flat.triangle_count(), 3u);
     expect_near(flat.positions[3 * 1 + 1], {12, 0, 5}); // instance 1: scaled by 2, then moved by (10, 0, 0) and (0, 0, 5)
     expect_near(flat.positions[3 * 2 + 0], {0, 10, 5});
-    // Instance 2: corner (0, 1, 0) mirrored in x stays put, turned a quarter about z goes to (-1, 0, 0), then
+    // Instance 2: corner (0, 1, 0) mirrored in x stays put, turned a quarter about -z goes to (1, 0, 0), then
     // moved; the mirror swaps corners 1 and 2, so it is the written-out triangle's corner 1.
-    expect_near(flat.positions[3 * 2 + 1], {-1, 10, 5});
+    expect_near(flat.positions[3 * 2 + 1], {1, 10, 5});
     // Written out: the same triangles, the mirrored one's winding kept front-facing.
     const Scene written_out = load_gltf(file, LoadOptions{-1, Instancing::Off});
     ASSERT_EQ(written_out.triangle_count(), 3u);
@@ -113,6 +114,25 @@ TEST_F(GltfLoaderTest, GpuInstancingPlacesEachInstance) {
     // An accessor of the wrong count is named.
     doc.gltf["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] = doc.add_vec3({1, 1, 1});
     expect_mentions(load_error(doc.write(dir_ / "bad.gltf")), {"bad.gltf", "EXT_mesh_gpu_instancing", "SCALE"});
+    doc.gltf["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] = "scales";
+    expect_mentions(load_error(doc.write(dir_ / "name.gltf")), {"name.gltf", "SCALE must be an accessor index"});
+}
+
+// The default keeps a mesh once where its copies beyond the first would hold
+// kLargeSharedTriangles or more: a triangle placed that many times and one
+// more, but not one placement fewer.
+TEST_F(GltfLoaderTest, ByDefaultOnlyMeshesWithManyCopiesAreKeptOnce) {
+    for (const size_t placements : {kLargeSharedTriangles, kLargeSharedTriangles + 1}) {
+        GltfDocument doc;
+        std::vector<float> translations;
+        for (size_t i = 0; i < placements; ++i) translations.insert(translations.end(), {float(i), 0, 0});
+        doc.add_mesh_node("grass", triangle_primitive(doc.add_vec3(kTriangle)),
+                          {{"extensions",
+                            {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", doc.add_vec3(translations)}}}}}}}});
+        const Scene scene = load_gltf(doc.write(dir_ / "grass.gltf"));
+        EXPECT_EQ(scene.placed_triangle_count(), placements);
+        EXPECT_EQ(scene.instances.size(), placements > kLargeSharedTriangles ? placements : 0u) << placements;
+    }
 }
 
 } // namespace

@@ -164,6 +164,15 @@ def test_a_loaded_scene_renders_through_the_camera_it_was_loaded_with(cache):
         wavefront.render(scene, camera=1, cache_dir=cache, **SMALL)
 
 
+def test_a_loaded_scene_renders_with_the_instancing_it_was_loaded_with(cache):
+    scene = wavefront.load_scene(CORNELL, instancing="all")
+    assert scene.placed_triangles == scene.triangles == 32  # no mesh of the box is placed twice
+    with pytest.raises(wavefront.InputError, match="instancing off is not the one .* was loaded with \\(all\\)"):
+        wavefront.render(scene, instancing="off", cache_dir=cache, **SMALL)
+    with pytest.raises(wavefront.InputError, match="instancing 'some'"):
+        wavefront.load_scene(CORNELL, instancing="some")
+
+
 def test_a_camera_set_by_eye_target_and_field_of_view(cache):
     # The Cornell box's own camera, given as eye, target and field of view: the file camera's pixels.
     file_camera = wavefront.render(CORNELL, cache_dir=cache, **SMALL).image
