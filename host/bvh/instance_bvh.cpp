@@ -52,15 +52,21 @@ Instance placement(const glm::dmat4& object_to_world) {
     return p;
 }
 
-// A placement's box grown by 2^-18 of its largest coordinate times its
-// stretch: the rounding of a ray mapped into the mesh's space moves a hit by
-// a few ulps of its coordinates times the stretch. (A ray from far beyond the
-// box moves it by ulps of its origin instead, which the box test's own pad,
-// 2^-20 of the origin's reach, covers up to a stretch of about 5:
-// geometry/bvh_traverse.h.)
-Bounds grown(const Bounds& b, double stretch) {
+// The largest coordinate of a box, in magnitude.
+float reach_of(const Bounds& b) {
     const glm::vec3 reach = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-    const float pad = float(0x1p-18 * stretch) * std::max(std::max(reach.x, reach.y), reach.z);
+    return std::max(std::max(reach.x, reach.y), reach.z);
+}
+
+// A placement's box grown for the rounding of a ray mapped into the mesh's
+// space, which moves a hit by a few ulps (2^-22 and less) of the larger of its
+// coordinates and the ray's origin, times the stretch: by 2^-18 of the box's
+// reach and 2^-21 of the scene's, each times the stretch. An origin beyond
+// the scene's reach adds ulps of its own, which the box test's own pad, 2^-20
+// of the origin's reach, covers up to a stretch of about 5
+// (geometry/bvh_traverse.h).
+Bounds grown(const Bounds& b, double stretch, float scene_reach) {
+    const float pad = float(stretch) * std::max(0x1p-18f * reach_of(b), 0x1p-21f * scene_reach);
     return Bounds{b.lo - pad, b.hi + pad};
 }
 
@@ -103,14 +109,16 @@ Bvh build_scene_bvh(const Scene& scene) {
     std::vector<Bounds> boxes;
     if (world) {
         placements.push_back(placement(glm::dmat4(1.0)));
-        boxes.push_back(grown(triangle_bounds(scene, 0, scene.world_triangle_count()), 1.0));
+        boxes.push_back(triangle_bounds(scene, 0, scene.world_triangle_count()));
     }
     const std::vector<Bounds> mesh_boxes = shared_mesh_bounds(scene);
     for (const MeshInstance& instance : scene.instances) {
         placements.push_back(placement(instance.object_to_world));
-        boxes.push_back(grown(transformed_bounds(mesh_boxes[instance.mesh], instance.object_to_world),
-                              stretch(placements.back())));
+        boxes.push_back(transformed_bounds(mesh_boxes[instance.mesh], instance.object_to_world));
     }
+    Bounds scene_box;
+    for (const Bounds& box : boxes) scene_box.grow(box);
+    for (size_t i = 0; i < boxes.size(); ++i) boxes[i] = grown(boxes[i], stretch(placements[i]), reach_of(scene_box));
     Bvh bvh = build_box_bvh(boxes);
     const std::vector<uint32_t> top_order = std::move(bvh.order);
     bvh.order.clear();
