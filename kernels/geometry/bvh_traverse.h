@@ -143,7 +143,7 @@
 #define WF_TRAVERSAL_SCENE_PARAM , const Instance* instances
 #define WF_TRAVERSAL_SCENE_ARG , instances
 #define WF_TRAVERSAL_SCENE_PARAM_OR_NONE , const Instance* instances = 0
-#define WF_HIT_PASSES(triangles, i, hit) 1
+#define WF_HIT_PASSES(triangles, i, hit) ((void)instances, 1) /* every hit passes; a leaf test reads no placement */
 #define WF_PLACEMENTS instances
 #define WF_TWO_LEVEL 1
 #endif
@@ -688,7 +688,12 @@ WF_FORCE_INLINE int traversal_step(Traversal* t, TraversalStack* stack, WF_GLOBA
                 const uint32_t slot = lowest_bit(m);
                 stack->entry[t->stack_size] = entry[slot];
                 stack->child[t->stack_size] = node->child[slot];
-                prefetch_child(nodes, triangles, stack->child[t->stack_size]);
+#if WF_TWO_LEVEL
+                if (t->instance < 0 && WF_PLACEMENTS && (node->child[slot] & WF_BVH_LEAF)) /* a placement */
+                    WF_PREFETCH(WF_PLACEMENTS + (node->child[slot] & WF_BVH_FIRST_MASK));
+                else
+#endif
+                    prefetch_child(nodes, triangles, stack->child[t->stack_size]);
                 ++t->stack_size;
             }
             t->child = node->child[next];
