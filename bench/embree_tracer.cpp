@@ -32,30 +32,69 @@ template <class Work> double on_threads(unsigned threads, size_t count, const Wo
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-} // namespace
-
-EmbreeScene::EmbreeScene(const std::vector<glm::vec3>& positions, unsigned threads) : threads_(threads) {
-    device_ = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
-    if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed");
-    scene_ = rtcNewScene(device_);
-    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    const size_t count = positions.size() / 3;
-    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+// A geometry of the scene's triangles [first, first + count), in their own space.
+RTCGeometry triangles(RTCDevice device, const Scene& scene, size_t first, size_t count) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
     auto* vertices = static_cast<float*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
     auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
                                                                    RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
-    check(device_, "allocating the triangle buffers");
-    std::memcpy(vertices, positions.data(), positions.size() * sizeof(glm::vec3)); // three packed floats each
+    check(device, "allocating the triangle buffers");
+    std::memcpy(vertices, &scene.positions[3 * first], 3 * count * sizeof(glm::vec3)); // three packed floats each
     for (uint32_t i = 0; i < 3 * count; ++i) indices[i] = i;
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene_, geometry);
-    rtcReleaseGeometry(geometry);
+    return geometry;
+}
+
+} // namespace
+
+EmbreeScene::EmbreeScene(const Scene& scene, unsigned threads) : threads_(threads) {
+    device_ = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
+    if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed");
+    scene_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     const auto start = std::chrono::steady_clock::now();
+    if (const size_t world = scene.world_triangle_count(); world > 0) {
+        RTCGeometry geometry = triangles(device_, scene, 0, world);
+        rtcAttachGeometry(scene_, geometry);
+        rtcReleaseGeometry(geometry);
+        first_.push_back(0u);
+        placed_first_.push_back(0u);
+    }
+    std::vector<RTCScene> meshes;
+    for (const SharedMesh& mesh : scene.shared_meshes) {
+        meshes.push_back(rtcNewScene(device_));
+        rtcSetSceneBuildQuality(meshes.back(), RTC_BUILD_QUALITY_HIGH);
+        RTCGeometry geometry = triangles(device_, scene, mesh.first, mesh.count);
+        rtcAttachGeometry(meshes.back(), geometry);
+        rtcReleaseGeometry(geometry);
+        rtcCommitScene(meshes.back());
+    }
+    auto placed = uint32_t(scene.world_triangle_count());
+    for (const MeshInstance& instance : scene.instances) {
+        RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(geometry, meshes[instance.mesh]);
+        float columns[12]; // RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR: x, y, z of each of the four columns
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 3; ++r) columns[3 * c + r] = float(instance.object_to_world[c][r]);
+        rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns);
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(scene_, geometry);
+        rtcReleaseGeometry(geometry);
+        first_.push_back(scene.shared_meshes[instance.mesh].first);
+        placed_first_.push_back(placed);
+        placed += scene.shared_meshes[instance.mesh].count;
+    }
     rtcCommitScene(scene_);
+    for (RTCScene mesh : meshes) rtcReleaseScene(mesh); // the instances hold them
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     check(device_, "building the scene");
+}
+
+void EmbreeScene::name_hit(uint32_t geometry, uint32_t prim, uint32_t* scene_triangle, uint32_t* placed) const {
+    *scene_triangle = first_[geometry] + prim;
+    *placed = placed_first_[geometry] + prim;
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -67,6 +106,7 @@ EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays, float t_fa
     EmbreeHits out;
     out.t.resize(rays.size());
     out.prim.resize(rays.size());
+    out.placed.resize(rays.size());
     out.seconds = on_threads(threads_, rays.size(), [&](size_t begin, size_t end) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -78,11 +118,14 @@ EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays, float t_fa
             h.ray.tnear = 0.0f;
             h.ray.tfar = t_far;
             h.ray.mask = ~0u;
-            h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            h.hit.geomID = h.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
             rtcIntersect1(scene_, &context, &h);
             const bool hit = h.hit.geomID != RTC_INVALID_GEOMETRY_ID;
             out.t[i] = hit ? h.ray.tfar : kInfinity;
-            out.prim[i] = hit ? h.hit.primID : RTC_INVALID_GEOMETRY_ID;
+            out.prim[i] = out.placed[i] = RTC_INVALID_GEOMETRY_ID;
+            if (hit)
+                name_hit(h.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? h.hit.instID[0] : h.hit.geomID, h.hit.primID,
+                         &out.prim[i], &out.placed[i]);
         }
     });
     return out;
@@ -92,6 +135,7 @@ EmbreeHits EmbreeScene::intersect8(const std::vector<BatchRay>& rays) const {
     EmbreeHits out;
     out.t.resize(rays.size());
     out.prim.resize(rays.size());
+    out.placed.resize(rays.size());
     const size_t packets = (rays.size() + 7) / 8;
     out.seconds = on_threads(threads_, packets, [&](size_t begin, size_t end) {
         RTCIntersectContext context;
@@ -109,13 +153,17 @@ EmbreeHits EmbreeScene::intersect8(const std::vector<BatchRay>& rays) const {
                 h.ray.tnear[k] = 0.0f;
                 h.ray.tfar[k] = kInfinity;
                 h.ray.mask[k] = ~0u;
-                h.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                h.hit.geomID[k] = h.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
             }
             rtcIntersect8(valid, scene_, &context, &h);
             for (size_t k = 0; k < 8 && 8 * p + k < rays.size(); ++k) {
+                const size_t i = 8 * p + k;
                 const bool hit = h.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
-                out.t[8 * p + k] = hit ? h.ray.tfar[k] : kInfinity;
-                out.prim[8 * p + k] = hit ? h.hit.primID[k] : RTC_INVALID_GEOMETRY_ID;
+                out.t[i] = hit ? h.ray.tfar[k] : kInfinity;
+                out.prim[i] = out.placed[i] = RTC_INVALID_GEOMETRY_ID;
+                if (hit)
+                    name_hit(h.hit.instID[0][k] != RTC_INVALID_GEOMETRY_ID ? h.hit.instID[0][k] : h.hit.geomID[k],
+                             h.hit.primID[k], &out.prim[i], &out.placed[i]);
             }
         }
     });

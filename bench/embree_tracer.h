@@ -1,7 +1,9 @@
 // embree_tracer.h — the reference the throughput bench measures against:
-// Embree 3 over the scene's world-space triangles, traced one ray per call
-// (rtcIntersect1, rtcOccluded1) or in packets of 8 (rtcIntersect8) on a given
-// number of std::threads, each taking one static chunk of the rays.
+// Embree 3 over the scene's triangles, its shared meshes as Embree's own
+// instances (a scene each, placed by RTC_GEOMETRY_TYPE_INSTANCE), traced one
+// ray per call (rtcIntersect1, rtcOccluded1) or in packets of 8
+// (rtcIntersect8) on a given number of std::threads, each taking one static
+// chunk of the rays.
 #pragma once
 
 #include <cmath>
@@ -12,13 +14,17 @@
 #include <glm/glm.hpp>
 
 #include "integrator/ray_batch.h"
+#include "scene/scene.h"
 
 namespace wf::bench {
 
 struct EmbreeHits {
     std::vector<float> t;       // per ray; infinity on a miss
     std::vector<uint32_t> prim; // the scene triangle hit, RTC_INVALID_GEOMETRY_ID on a miss
-    double seconds = 0.0;       // wall time of the tracing threads
+    // The triangle as placed: its index in flattened(scene) (scene/mesh_placement.h),
+    // the scene triangle itself where the scene has no instances.
+    std::vector<uint32_t> placed;
+    double seconds = 0.0; // wall time of the tracing threads
 };
 
 struct EmbreeOcclusion {
@@ -28,8 +34,9 @@ struct EmbreeOcclusion {
 
 class EmbreeScene {
 public:
-    // positions: three corners per triangle, in the scene's order (primID = triangle).
-    EmbreeScene(const std::vector<glm::vec3>& positions, unsigned threads);
+    // The scene's world-space triangles in one geometry (primID = triangle),
+    // and each instance of a shared mesh an instance of that mesh's scene.
+    EmbreeScene(const Scene& scene, unsigned threads);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -45,7 +52,13 @@ public:
     double build_seconds() const { return build_seconds_; }
 
 private:
+    // The scene triangle and the placed one that a hit names: geometry `geometry`
+    // of the top scene (an instance's, or the world triangles'), triangle `prim` of it.
+    void name_hit(uint32_t geometry, uint32_t prim, uint32_t* scene_triangle, uint32_t* placed) const;
+
     unsigned threads_;
+    std::vector<uint32_t> first_; // by top-scene geometry: the scene triangle of its primID 0
+    std::vector<uint32_t> placed_first_; // the same in flattened(scene)
     double build_seconds_ = 0.0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

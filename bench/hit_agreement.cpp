@@ -78,8 +78,8 @@ void classify_embree_only(Agreement& a, const std::vector<BatchRay>& segments, c
     const EmbreeHits hits = embree.intersect1(only, 1.0f);
     for (size_t i = 0; i < only.size(); ++i) {
         long double t = 0;
-        const bool inside = hits.prim[i] != RTC_INVALID_GEOMETRY_ID &&
-                            exact_crossing(only[i], &positions[3 * size_t{hits.prim[i]}], &t) && t > 0 && t < 1;
+        const bool inside = hits.placed[i] != RTC_INVALID_GEOMETRY_ID &&
+                            exact_crossing(only[i], &positions[3 * size_t{hits.placed[i]}], &t) && t > 0 && t < 1;
         ++(inside ? a.embree_inside : a.embree_past_end);
     }
 }

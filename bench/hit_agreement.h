@@ -39,8 +39,8 @@ Agreement compare_any(const AnyHits& ours, const EmbreeOcclusion& embree);
 
 // Fills embree_past_end and embree_inside for compare_any's segments: for each
 // that Embree alone finds blocked, Embree's closest hit on it, and that
-// triangle's crossing recomputed in long double. `positions` are the scene's
-// corners (Embree's primIDs index them).
+// triangle's crossing recomputed in long double. `positions` are the placed
+// triangles' corners, flattened(scene)'s (EmbreeHits::placed indexes them).
 void classify_embree_only(Agreement& a, const std::vector<BatchRay>& segments, const AnyHits& ours,
                           const EmbreeOcclusion& theirs, const EmbreeScene& embree,
                           const std::vector<glm::vec3>& positions);

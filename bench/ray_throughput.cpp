@@ -32,6 +32,7 @@
 
 #include "bvh/bvh_builder.h"
 #include "scene/camera.h"
+#include "scene/mesh_placement.h"
 #include "device/device_scene.h"
 #include "embree_tracer.h"
 #include "base/errors.h"
@@ -59,6 +60,7 @@ struct Options {
     std::string device = "cpu";
     KernelKind kernels = KernelKind::Auto;
     uint32_t trace_width = 0;
+    Instancing instancing = Instancing::Off; // every placement written out unless asked
     std::string json;
 };
 
@@ -72,7 +74,7 @@ uint32_t positive(const std::string& flag, const std::string& value) {
 
 Options parse(int argc, const char** argv) {
     const std::string usage = "usage: wavefront_ray_bench SCENE.gltf|.glb [--rays N] [--threads T] [--device D] "
-                              "[--kernels K] [--trace-width W] [--json OUT.json]";
+                              "[--kernels K] [--trace-width W] [--instancing off|large|all] [--json OUT.json]";
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -88,6 +90,11 @@ Options parse(int argc, const char** argv) {
         else if (a == "--trace-width" && has_value) {
             o.trace_width = positive(a, argv[++i]);
             if (o.trace_width > 2) throw InputError(std::string("--trace-width ") + argv[i] + ": expected 1 or 2");
+        }
+        else if (a == "--instancing" && has_value) {
+            const std::optional<uint32_t> mode = choice_value(kInstancingNames, argv[++i]);
+            if (!mode) throw InputError(std::string("--instancing ") + argv[i] + ": expected off, large or all");
+            o.instancing = static_cast<Instancing>(*mode);
         }
         else if (a == "--json" && has_value) o.json = argv[++i];
         else if (a.rfind("--", 0) != 0 && o.scene.empty()) o.scene = a;
@@ -239,9 +246,13 @@ void write_json(const std::string& path, const Report& r) {
 }
 
 int run(const Options& options) {
-    // Every placement written out, one tree on both sides: the hits are
-    // compared with Embree's triangle by triangle.
-    const Scene scene = load_gltf(options.scene, LoadOptions{-1, Instancing::Off});
+    // Every placement written out, one tree on both sides, unless --instancing
+    // asks for shared meshes: then ours are a two-level tree and Embree's its
+    // own instances, hits compared by the unique triangle, the rays drawn on
+    // the placed triangles.
+    const Scene scene = load_gltf(options.scene, LoadOptions{-1, options.instancing});
+    const Scene flat = scene.instances.empty() ? Scene{} : flattened(scene);
+    const Scene& placed = scene.instances.empty() ? scene : flat;
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
     const OpenClDevice device = open_device(options.device);
     check_shared_layouts(device);
@@ -253,7 +264,7 @@ int run(const Options& options) {
     settings.kernels = options.kernels;
     settings.trace_width = options.trace_width;
     const KernelProgram program = build_render_program(device, scene, settings, &report.features);
-    const EmbreeScene embree(scene.positions, options.threads);
+    const EmbreeScene embree(scene, options.threads);
     report.scene = options.scene;
     report.triangles = scene.triangle_count();
     report.threads = options.threads;
@@ -273,14 +284,14 @@ int run(const Options& options) {
         report.rows.push_back(closest_row("camera", batch, batch.rays(), embree, bvh, true));
     }
     {
-        const std::vector<BatchRay> rays = bounce_rays(scene, options.rays, 1);
+        const std::vector<BatchRay> rays = bounce_rays(placed, options.rays, 1);
         report.rows.push_back(closest_row("bounce", RayBatch(device, program.program, uploaded, rays), rays, embree,
                                           bvh, false));
     }
     {
-        const std::vector<BatchRay> rays = shadow_segments(scene, options.rays, 2);
+        const std::vector<BatchRay> rays = shadow_segments(placed, options.rays, 2);
         report.rows.push_back(
-            any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree, scene.positions));
+            any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree, placed.positions));
     }
 
     print_table(std::cout, report);
