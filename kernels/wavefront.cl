@@ -219,10 +219,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             Arrival arrival;
 #if WF_SURFACE_IN_LANES
             if (path_arrival(&path, &params, slot, &scene, &film, &arrival)) {
-                const bool numbers = !lanes_draw_numbers(&params);
-                if (numbers) arrival_numbers(&params, &arrival);
                 lane_at = atomic_inc(&lanes_length);
-                shade_lanes_put_arrival(lanes, lane_at, &arrival, numbers);
+                shade_lanes_put_arrival(lanes, lane_at, &arrival);
             }
 #else
             ShadeContext shading;

@@ -150,12 +150,14 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
     return sobol_bits_to_float(sobol_bits(index, dimension));
 }
 
-/* The bit twiddling below is written once for a number and for four in
- * lanes (uint4, a Sobol point's four coordinates): the same operations on
- * each lane, so the same bits. WF_SOBOL_SCALAR(x) is x in every lane. */
-#define WF_SOBOL_FUNCTIONS(T, suffix, WF_SOBOL_SCALAR)                                                               \
+/* The bit twiddling below is written once for a number, for four in lanes
+ * (uint4, a Sobol point's four coordinates) and, in sobol_lanes.inc, for a
+ * number a path in the group schedule's lanes: the same operations on each
+ * lane, so the same bits. NAME(f) names f for type T; WF_SOBOL_SCALAR(x) is
+ * x in every lane. */
+#define WF_SOBOL_FUNCTIONS(T, NAME, WF_SOBOL_SCALAR)                                                               \
     /* OpenCL C 1.2 has no bit-reversal built-in: swap halves, then quarters, ... */                                 \
-    WF_INLINE T sobol_reverse_bits##suffix(T x) {                                                                    \
+    WF_INLINE T NAME(sobol_reverse_bits)(T x) {                                                                    \
         x = (x >> 16u) | (x << 16u);                                                                                 \
         x = WF_SOBOL_SWAP(x, 8u, WF_SOBOL_SCALAR(0x00ff00ffu));                                                      \
         x = WF_SOBOL_SWAP(x, 4u, WF_SOBOL_SCALAR(0x0f0f0f0fu));                                                      \
@@ -164,7 +166,7 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
     }                                                                                                                \
     /* A full-avalanche 32-bit integer hash (xorshift-multiply rounds; constants                                     \
      * from Wellons' hash-prospector search), for combining keys into seeds. */                                      \
-    WF_INLINE T sobol_hash##suffix(T x) {                                                                            \
+    WF_INLINE T NAME(sobol_hash)(T x) {                                                                            \
         x ^= x >> 16u;                                                                                               \
         x *= WF_SOBOL_SCALAR(0x7feb352du);                                                                           \
         x ^= x >> 15u;                                                                                               \
@@ -179,7 +181,7 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
      * input before and after the seed enters give every bit a dependence on all                                     \
      * the lower bits; measured pairwise flip correlations are at the noise level                                    \
      * of 20000 trials, unlike the original four-multiply form. */                                                   \
-    WF_INLINE T sobol_owen_scramble_reversed##suffix(T x, T seed) {                                                  \
+    WF_INLINE T NAME(sobol_owen_scramble_reversed)(T x, T seed) {                                                  \
         x ^= x * WF_SOBOL_SCALAR(0x9e3779b8u);                                                                       \
         x += seed;                                                                                                   \
         x *= (seed >> 16u) | WF_SOBOL_SCALAR(1u);                                                                    \
@@ -190,17 +192,23 @@ WF_INLINE float sobol_sample(uint32_t index, uint32_t dimension) {
 
 #define WF_SOBOL_ONE(x) (x)
 #define WF_SOBOL_FOUR(x) make_uint4((x), (x), (x), (x))
-WF_SOBOL_FUNCTIONS(uint32_t, , WF_SOBOL_ONE)
-WF_SOBOL_FUNCTIONS(uint4, 4, WF_SOBOL_FOUR)
+#define WF_SOBOL_NAME_ONE(f) f
+#define WF_SOBOL_NAME_FOUR(f) f##4
+WF_SOBOL_FUNCTIONS(uint32_t, WF_SOBOL_NAME_ONE, WF_SOBOL_ONE)
+WF_SOBOL_FUNCTIONS(uint4, WF_SOBOL_NAME_FOUR, WF_SOBOL_FOUR)
 #undef WF_SOBOL_ONE
 #undef WF_SOBOL_FOUR
-#undef WF_SOBOL_FUNCTIONS
+#undef WF_SOBOL_NAME_ONE
+#undef WF_SOBOL_NAME_FOUR
 
 /* Owen scrambling of x: each bit flipped by a hash of the seed and the bits
  * above it. */
 WF_INLINE uint32_t sobol_owen_scramble(uint32_t x, uint32_t seed) {
     return sobol_reverse_bits(sobol_owen_scramble_reversed(sobol_reverse_bits(x), seed));
 }
+
+/* What coordinate d's scrambling seed hashes with the keys' hash. */
+#define WF_SOBOL_SALT(d) (0x9e3779b9u * ((d) + 1u))
 
 /* Four numbers in [0, 1) for (pixel, sample, bounce, group): an Owen-scrambled
  * Sobol point, different for every (seed, pixel, bounce, group). The sample
@@ -215,7 +223,7 @@ WF_INLINE float4 sobol_uniform4(uint32_t seed, uint32_t pixel, uint32_t sample, 
     const uint32_t key = sobol_hash(sobol_hash(sobol_hash(sobol_hash(seed) ^ pixel) ^ bounce) ^ group);
     const uint32_t reversed_index = sobol_owen_scramble_reversed(sobol_reverse_bits(sample), key);
     const uint4 seeds = sobol_hash4(make_uint4(key, key, key, key) ^
-                                    make_uint4(0x9e3779b9u * 1u, 0x9e3779b9u * 2u, 0x9e3779b9u * 3u, 0x9e3779b9u * 4u));
+                                    make_uint4(WF_SOBOL_SALT(0u), WF_SOBOL_SALT(1u), WF_SOBOL_SALT(2u), WF_SOBOL_SALT(3u)));
     const uint4 bits =
         sobol_reverse_bits4(sobol_owen_scramble_reversed4(sobol_point_bits_reversed(reversed_index), seeds));
     return make_float4(sobol_bits_to_float(bits.x), sobol_bits_to_float(bits.y), sobol_bits_to_float(bits.z),

@@ -49,6 +49,7 @@
 #include "stages/scatter.inc"
 #include "stages/surface.inc"
 #include "common/rng_lanes.inc"
+#include "common/sobol_lanes.inc"
 /* WF_W stays WF_LANE_WIDTH to the end of the file: the code below speaks its vocabulary. */
 
 /* Room for a whole work-group, in whole runs of lanes. */
@@ -146,10 +147,9 @@ WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeConte
 }
 
 #if WF_SURFACE_IN_LANES
-/* A path that hit, as path_arrival found it, and its numbers where
- * arrival_numbers drew them (else the lanes draw them: shade_lanes_numbers):
- * the lanes find its surface. */
-WF_GPU_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a, bool numbers) {
+/* A path that hit, as path_arrival found it: the lanes draw its numbers
+ * (shade_lanes_numbers) and find its surface. */
+WF_GPU_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Arrival* a) {
     WF_LANE_AT(soa, WF_LANE_TRIANGLE, at) = as_float(a->triangle);
     WF_LANE_AT(soa, WF_LANE_HIT, at) = a->t;
     WF_LANE_AT(soa, WF_LANE_HIT + 1, at) = a->b1;
@@ -161,13 +161,6 @@ WF_GPU_INLINE void shade_lanes_put_arrival(__local float* soa, uint at, const Ar
     WF_LANE_AT(soa, WF_LANE_PIXEL, at) = as_float(a->pixel);
     WF_LANE_AT(soa, WF_LANE_SAMPLE, at) = as_float(a->sample);
     WF_LANE_AT(soa, WF_LANE_DEPTH, at) = as_float(a->depth);
-    if (!numbers) return;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_U, at) = a->light_u.x;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 1, at) = a->light_u.y;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 2, at) = a->light_u.z;
-    WF_LANE_AT(soa, WF_LANE_LIGHT_U + 3, at) = a->light_u.w;
-    lanes_put3(soa, WF_LANE_U, at, a->u.xyz);
-    WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at) = a->u.w;
 }
 
 /* The emission the lanes found for the path put at `at`, added to it as
@@ -227,22 +220,27 @@ WF_GPU_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, floa
 #define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
 
 #if WF_SURFACE_IN_LANES
-/* Whether the lanes draw the numbers of the arrivals put (shade_lanes_numbers):
- * they hash as the independent sampler does; the Sobol sampler's are drawn
- * a path at a time. */
-WF_INLINE bool lanes_draw_numbers(const RenderParams* params) { return params->sampler == WF_SAMPLER_INDEPENDENT; }
+/* The four numbers of a group for each lane's (pixel, sample, bounce), as
+ * sample_values draws them a path at a time. */
+WF_INLINE void LFN(lane_sample_values)(const RenderParams* params, LUINT pixel, LUINT sample, LUINT bounce,
+                                       uint group, LREAL u[4]) {
+    if (params->sampler == WF_SAMPLER_SOBOL)
+        LFN(sobol_uniform4)(params->seed, pixel, sample, bounce, group, u);
+    else
+        LFN(rng_uniform4)(params->seed, pixel, sample, bounce, group, u);
+}
 
-/* arrival_numbers for the arrivals put at [first, first + WF_LANE_WIDTH), as
- * the independent sampler draws them: the light's group and the BSDF's. A path
- * that ends here, or one in a scene without lights, ignores what it gets. */
+/* arrival_numbers for the arrivals put at [first, first + WF_LANE_WIDTH): the
+ * light's group and the BSDF's. A path that ends here, or one in a scene
+ * without lights, ignores what it gets. */
 WF_GPU_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params) {
     const LUINT pixel = LASUINT(WF_LANE_LOAD(WF_LANE_PIXEL, first));
     const LUINT sample = LASUINT(WF_LANE_LOAD(WF_LANE_SAMPLE, first));
     const LUINT depth = LASUINT(WF_LANE_LOAD(WF_LANE_DEPTH, first));
     LREAL u[4];
-    LFN(rng_uniform4)(params->seed, pixel, sample, depth, WF_RNG_LIGHT, u);
+    LFN(lane_sample_values)(params, pixel, sample, depth, WF_RNG_LIGHT, u);
     for (int i = 0; i < 4; ++i) WF_LANE_STORE(u[i], WF_LANE_LIGHT_U + i, first);
-    LFN(rng_uniform4)(params->seed, pixel, sample, depth, WF_RNG_BSDF, u);
+    LFN(lane_sample_values)(params, pixel, sample, depth, WF_RNG_BSDF, u);
     for (int i = 0; i < 3; ++i) WF_LANE_STORE(u[i], WF_LANE_U + i, first);
     WF_LANE_STORE(u[3], WF_LANE_ROULETTE_U, first);
 }
@@ -331,7 +329,7 @@ WF_GPU_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, 
     p.glass_table = scene->glass_albedo; /* a GPU's program with lanes (--kernels gpu --lane-width 8) */
 #endif
 #if WF_SURFACE_IN_LANES
-    if (lanes_draw_numbers(params)) shade_lanes_numbers(soa, first, params);
+    shade_lanes_numbers(soa, first, params);
     shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);
 #else
 #define WF_LOAD_REAL(name, has) \
