@@ -25,17 +25,26 @@ WavefrontIntegrator::WavefrontIntegrator(const OpenClDevice& device, const cl::P
     }
 }
 
+void WavefrontIntegrator::launch_consumers(QueueId queue, uint32_t items) {
+    for (int s = 0; s < kStageKernels; ++s)
+        if (kStageQueue[s] == queue) launch(static_cast<Stage>(s), items);
+}
+
 void WavefrontIntegrator::extend(uint32_t items) {
-    launch(STAGE_INTERSECT, items);
-    if (settings_.sort_materials) {
-        PathIntegrator::launch(STAGE_SORT, count_materials_, items);
-        PathIntegrator::launch(STAGE_SORT, scan_materials_, 1);
-        PathIntegrator::launch(STAGE_SORT, scatter_materials_, items);
-        // The extension queue is the first region of the queue buffer.
-        device_.queue.enqueueCopyBuffer(sorted_, pool_.queues, 0, 0, sizeof(cl_uint) * size_t{items});
-        device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * WF_SORT_KEYS);
+    for (int s = 0; s < kStageKernels; ++s) {
+        if (kStageQueue[s] != WF_QUEUE_EXTEND) continue;
+        if (s == STAGE_SHADE && settings_.sort_materials) sort_by_material(items);
+        launch(static_cast<Stage>(s), items);
     }
-    launch(STAGE_SHADE, items);
+}
+
+void WavefrontIntegrator::sort_by_material(uint32_t items) {
+    PathIntegrator::launch(STAGE_SORT, count_materials_, items);
+    PathIntegrator::launch(STAGE_SORT, scan_materials_, 1);
+    PathIntegrator::launch(STAGE_SORT, scatter_materials_, items);
+    // The extension queue is the first region of the queue buffer.
+    device_.queue.enqueueCopyBuffer(sorted_, pool_.queues, 0, 0, sizeof(cl_uint) * size_t{items});
+    device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * WF_SORT_KEYS);
 }
 
 // Every kernel's arguments: the shared ones (stage_args.h), then the sort's
@@ -68,13 +77,19 @@ void WavefrontIntegrator::render_to(uint32_t round_spp) {
     stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Refill and passes. The queues shade fills are read before their stages, so
-// that each is launched at its own length and not at all when empty (a scene
-// without lights never launches intersect_shadow). Intersect_shadow sends some
-// of its paths to roulette and the rest to accumulation, and roulette ends
-// some, so those two are sized for everything that may reach them; their
-// kernels stop at the queue's final length.
+// Refill and passes, each iteration in two phases. First the stages that
+// take the free slots (generate) and the extension queue (intersect, shade).
+// Then the queues these filled, the later queues of the list (from
+// WF_QUEUE_SHADOW on), are read, and each stage that takes one is launched in
+// the list's order, at its queue's length plus the lengths launched before it
+// in this phase: a stage may pass its paths on to a later one (intersect_shadow
+// to roulette or accumulate, roulette to accumulate), whose kernel stops at
+// its queue's final length. An empty launch is left out (a scene without
+// lights never launches intersect_shadow). So the loop follows the stage list,
+// and a stage added to it is launched here without a line of its own.
 void WavefrontIntegrator::run_iterations(bool passes) {
+    static_assert(WF_QUEUE_EXTEND == 0 && WF_QUEUE_REGENERATE == 1 && kLaterQueue == 2,
+                  "the first phase's queues, [EXTEND, REGENERATE], are cleared with one fill");
     const cl::CommandQueue& queue = device_.queue;
     const uint32_t pool = params_.pool_size;
     uint32_t extending = 0, regenerating = pool;
@@ -82,20 +97,21 @@ void WavefrontIntegrator::run_iterations(bool passes) {
         const bool stop = stopping(); // read once: it may change at any time
         if (extending + (stop ? 0u : regenerating) == 0) break;
         const bool generating = regenerating > 0 && !(passes && extending > 0) && !stop;
-        if (generating) launch(STAGE_GENERATE, regenerating);
+        if (generating) launch_consumers(WF_QUEUE_REGENERATE, regenerating);
         extend(std::min(pool, extending + (generating ? regenerating : 0u)));
         // Shade consumed EXTEND and generate REGENERATE; passes keep the
         // slots freed so far in REGENERATE until the pass ends.
         queue.enqueueFillBuffer(pool_.counters, 0u, 0, (generating ? 2 : 1) * sizeof(cl_uint));
-        std::array<cl_uint, 3> shaded{}; // SHADOW, CONTINUE, FINISHED
-        queue.enqueueReadBuffer(pool_.counters, CL_TRUE, WF_QUEUE_SHADOW * sizeof(cl_uint), sizeof(shaded),
-                                shaded.data());
-        const uint32_t shadowed = shaded[0], continuing = shaded[1] + shadowed;
-        const uint32_t finishing = shaded[2] + continuing;
-        if (shadowed) launch(STAGE_INTERSECT_SHADOW, shadowed);
-        if (continuing) launch(STAGE_ROULETTE, continuing);
-        if (finishing) launch(STAGE_ACCUMULATE, finishing);
-        const auto counters = read_counters(WF_QUEUE_SHADOW); // the queues consumed above, and the statistics
+        std::array<cl_uint, WF_QUEUE_COUNT> queued{};
+        queue.enqueueReadBuffer(pool_.counters, CL_TRUE, kLaterQueue * sizeof(cl_uint),
+                                (WF_QUEUE_COUNT - kLaterQueue) * sizeof(cl_uint), &queued[kLaterQueue]);
+        uint32_t reaching = 0;
+        for (int s = 0; s < kStageKernels; ++s) {
+            if (kStageQueue[s] < kLaterQueue) continue;
+            reaching += queued[kStageQueue[s]];
+            if (reaching) launch(static_cast<Stage>(s), reaching);
+        }
+        const auto counters = read_counters(kLaterQueue); // the queues consumed above, and the statistics
         extending = counters[WF_QUEUE_EXTEND];
         regenerating = counters[WF_QUEUE_REGENERATE];
     }

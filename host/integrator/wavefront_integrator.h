@@ -41,9 +41,15 @@ private:
     void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
     void run_iterations(bool passes);
     void run_fullest_first();
-    // Intersect and shade over `items` paths of the extension queue, sorted
-    // by material between them when the settings ask.
+    // Every stage of the list that takes `queue`, over `items` paths.
+    void launch_consumers(QueueId queue, uint32_t items);
+    // The stages that take the extension queue (intersect, shade) over
+    // `items` paths of it, sorted by material before shade when the settings ask.
     void extend(uint32_t items);
+    void sort_by_material(uint32_t items);
+    // The first of the queues that the stages after shade take, refill's
+    // second phase: those before it are generate's and the extension queue.
+    static constexpr int kLaterQueue = WF_QUEUE_SHADOW;
     // The stage of the list that takes `queue` first.
     static Stage consumer_of(QueueId queue);
 
