@@ -223,12 +223,17 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
                 shade_lanes_put_arrival(lanes, lane_at, &arrival);
             }
 #else
-            ShadeContext shading;
-            if (shade_arrival(&path, &params, slot, &scene, &film, &arrival) &&
-                shade_surface(&path, &params, slot, &scene, &film, &arrival, &shading)) {
-                if (!WF_LIGHTS_IN_LANES) shade_light(&params, &scene, &shading);
-                lane_at = atomic_inc(&lanes_length);
-                shade_lanes_put(lanes, lane_at, &shading);
+            if (path_arrival(&path, &params, slot, &scene, &film, &arrival)) {
+                /* The light's numbers now, for shade_light; the lanes draw
+                 * the BSDF's (shade_lanes_numbers). */
+                arrival_light_numbers(&params, &arrival);
+                arrival.u = (float4)(0.0f);
+                ShadeContext shading;
+                if (shade_surface(&path, &params, slot, &scene, &film, &arrival, &shading)) {
+                    if (!WF_LIGHTS_IN_LANES) shade_light(&params, &scene, &shading);
+                    lane_at = atomic_inc(&lanes_length);
+                    shade_lanes_put(lanes, lane_at, &shading, &arrival);
+                }
             }
 #endif
         }

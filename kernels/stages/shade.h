@@ -170,17 +170,20 @@ WF_INLINE bool path_arrival(PathState* path, const RenderParams* params, uint sl
     return true;
 }
 
-/* The numbers a hit's bounce draws, where the path goes on. */
-WF_INLINE void arrival_numbers(const RenderParams* params, Arrival* a) {
+/* Next-event estimation's numbers for a hit's bounce, where the path goes on
+ * and the scene has lights; used unless the BSDF is a Dirac one. */
+WF_INLINE void arrival_light_numbers(const RenderParams* params, Arrival* a) {
     a->light_u = (float4)(0.0f);
-    a->u = (float4)(0.0f);
-    if (!a->goes_on) return;
-    /* Next-event estimation's numbers, used unless the BSDF is a Dirac one. */
-    if (params->light_count > 0u) a->light_u = sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_LIGHT);
-    /* The BSDF group's fourth number is roulette's: drawn with the direction,
-     * independent of it, and handed on so that roulette need not draw the
-     * group again. */
-    a->u = sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_BSDF);
+    if (a->goes_on && params->light_count > 0u)
+        a->light_u = sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_LIGHT);
+}
+
+/* The numbers a hit's bounce draws, where the path goes on. The BSDF group's
+ * fourth number is roulette's: drawn with the direction, independent of it,
+ * and handed on so that roulette need not draw the group again. */
+WF_INLINE void arrival_numbers(const RenderParams* params, Arrival* a) {
+    arrival_light_numbers(params, a);
+    a->u = a->goes_on ? sample_values(params, a->pixel, a->sample, a->depth, WF_RNG_BSDF) : (float4)(0.0f);
 }
 
 /* path_arrival, and on a hit its numbers. */

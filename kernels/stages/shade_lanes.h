@@ -114,7 +114,9 @@ WF_GPU_INLINE void lanes_put_light(__local float* soa, uint at, const LightSampl
     lanes_put3(soa, WF_LANE_LIGHT_NORMAL, at, light->normal);
 }
 
-WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c) {
+/* A path as shade_surface left it, with its light sample where the lanes
+ * take none; the lanes draw its BSDF numbers from its arrival's keys. */
+WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeContext* c, const Arrival* a) {
     const BsdfQuery* q = &c->query;
 #define WF_PUT_REAL(name, has) \
     if (has) WF_LANE_AT(soa, WF_LANE_PARAM_##name, at) = q->params.name;
@@ -124,7 +126,6 @@ WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeConte
 #undef WF_PUT_REAL
 #undef WF_PUT_RGB
     lanes_put3(soa, WF_LANE_WO, at, q->wo);
-    lanes_put3(soa, WF_LANE_U, at, q->u);
     lanes_put3(soa, WF_LANE_POSITION, at, c->position);
     lanes_put3(soa, WF_LANE_POSITION_ERROR, at, c->position_error);
     lanes_put3(soa, WF_LANE_GEOMETRIC_NORMAL, at, c->geometric_normal);
@@ -132,7 +133,9 @@ WF_GPU_INLINE void shade_lanes_put(__local float* soa, uint at, const ShadeConte
     lanes_put3(soa, WF_LANE_FRAME_Y, at, c->frame.y);
     lanes_put3(soa, WF_LANE_FRAME_Z, at, c->frame.z);
     lanes_put3(soa, WF_LANE_THROUGHPUT, at, c->throughput);
-    WF_LANE_AT(soa, WF_LANE_ROULETTE_U, at) = c->roulette_u;
+    WF_LANE_AT(soa, WF_LANE_PIXEL, at) = as_float(a->pixel);
+    WF_LANE_AT(soa, WF_LANE_SAMPLE, at) = as_float(a->sample);
+    WF_LANE_AT(soa, WF_LANE_DEPTH, at) = as_float(a->depth);
     WF_LANE_AT(soa, WF_LANE_LIGHT, at) = q->light ? 1.0f : 0.0f;
 #if WF_LIGHTS_IN_LANES
     const float4 u = q->light ? c->light_u : (float4)(0.0f); /* any numbers serve a path without a light sample */
@@ -219,7 +222,6 @@ WF_GPU_INLINE Scatter_x1 shade_lanes_get(__local const float* soa, uint at, floa
 #define WF_LANE_MASK(field, first) (WF_LANE_LOAD(field, first) != 0.0f)
 #define WF_LANE_FROM_MASK(m) WF_CAT(convert_float, WF_LANE_WIDTH)(-(m)) /* -1 set: 1.0f */
 
-#if WF_SURFACE_IN_LANES
 /* The four numbers of a group for each lane's (pixel, sample, bounce), as
  * sample_values draws them a path at a time. */
 WF_INLINE void LFN(lane_sample_values)(const RenderParams* params, LUINT pixel, LUINT sample, LUINT bounce,
@@ -230,21 +232,26 @@ WF_INLINE void LFN(lane_sample_values)(const RenderParams* params, LUINT pixel, 
         LFN(rng_uniform4)(params->seed, pixel, sample, bounce, group, u);
 }
 
-/* arrival_numbers for the arrivals put at [first, first + WF_LANE_WIDTH): the
- * light's group and the BSDF's. A path that ends here, or one in a scene
- * without lights, ignores what it gets. */
-WF_GPU_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params) {
+/* arrival_numbers for the paths put at [first, first + WF_LANE_WIDTH): the
+ * BSDF's group (its direction's numbers and roulette's) and, where `light`,
+ * the light's, which are otherwise drawn a path at a time before the lanes
+ * (arrival_light_numbers, for shade_light). A path that ends here, or one in
+ * a scene without lights, ignores what it gets. */
+WF_GPU_INLINE void shade_lanes_numbers(__local float* soa, uint first, const RenderParams* params, bool light) {
     const LUINT pixel = LASUINT(WF_LANE_LOAD(WF_LANE_PIXEL, first));
     const LUINT sample = LASUINT(WF_LANE_LOAD(WF_LANE_SAMPLE, first));
     const LUINT depth = LASUINT(WF_LANE_LOAD(WF_LANE_DEPTH, first));
     LREAL u[4];
-    LFN(lane_sample_values)(params, pixel, sample, depth, WF_RNG_LIGHT, u);
-    for (int i = 0; i < 4; ++i) WF_LANE_STORE(u[i], WF_LANE_LIGHT_U + i, first);
+    if (light) {
+        LFN(lane_sample_values)(params, pixel, sample, depth, WF_RNG_LIGHT, u);
+        for (int i = 0; i < 4; ++i) WF_LANE_STORE(u[i], WF_LANE_LIGHT_U + i, first);
+    }
     LFN(lane_sample_values)(params, pixel, sample, depth, WF_RNG_BSDF, u);
     for (int i = 0; i < 3; ++i) WF_LANE_STORE(u[i], WF_LANE_U + i, first);
     WF_LANE_STORE(u[3], WF_LANE_ROULETTE_U, first);
 }
 
+#if WF_SURFACE_IN_LANES
 /* shade_surface in lanes, for the arrivals put at [first, first + WF_LANE_WIDTH):
  * the point and its normals, the emission found (into the lanes' fields, for
  * shade_lanes_emission), the material's factors, the frame and wo (on the
@@ -329,7 +336,7 @@ WF_GPU_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, 
     p.glass_table = scene->glass_albedo; /* a GPU's program with lanes (--kernels gpu --lane-width 8) */
 #endif
 #if WF_SURFACE_IN_LANES
-    shade_lanes_numbers(soa, first, params);
+    shade_lanes_numbers(soa, first, params, true);
     shade_lanes_surface(soa, first, params, scene, &p, &wo, &s, &l.present);
 #else
 #define WF_LOAD_REAL(name, has) \
@@ -339,6 +346,7 @@ WF_GPU_INLINE void shade_lanes_run(__local float* soa, uint first, uint length, 
     WF_LAYERED_PARAMS(WF_LOAD_REAL, WF_LOAD_RGB)
 #undef WF_LOAD_REAL
 #undef WF_LOAD_RGB
+    shade_lanes_numbers(soa, first, params, false);
     wo = WF_LANE_LOAD_VEC(WF_LANE_WO, first);
     s.position = WF_LANE_LOAD_VEC(WF_LANE_POSITION, first);
     s.position_error = WF_LANE_LOAD_VEC(WF_LANE_POSITION_ERROR, first);
