@@ -17,6 +17,7 @@
 #include "stages/sort_by_material.h"
 #include "stages/shade.h"
 #include "stages/shade_lanes.h"
+#include "stages/generate_lanes.h"
 #include "stages/intersect_shadow.h"
 #include "stages/roulette.h"
 #include "stages/accumulate.h"
@@ -149,15 +150,28 @@ WF_INLINE uint local_slots_to_trace(__local const LocalQueue* q, uint lid, uint*
 
 /* The extension queue's slots work-item `lid` traces, WF_TRACE_SLOTS of
  * them: the queue's camera rays, from `cameras` on, in runs of their own,
- * so that a run of them is a packet (stages/intersect.h). */
-WF_INLINE uint extension_slots_to_trace(__local const LocalQueue* q, uint cameras, uint lid, uint* slot) {
+ * so that a run of them is a packet (stages/intersect.h). *camera says
+ * whether the run is of camera rays. */
+WF_INLINE uint extension_slots_to_trace(__local const LocalQueue* q, uint cameras, uint lid, uint* slot, bool* camera) {
     const uint before = (cameras + WF_TRACE_SLOTS - 1u) / WF_TRACE_SLOTS; /* work-items for those before */
     const uint first = lid < before ? WF_TRACE_SLOTS * lid : cameras + WF_TRACE_SLOTS * (lid - before);
     const uint end = lid < before ? cameras : q->length;
+    *camera = lid >= before;
     if (first >= end) return 0u;
     const uint count = min((uint)WF_TRACE_SLOTS, end - first);
     for (uint i = 0u; i < count; ++i) slot[i] = q->slots[first + i];
     return count;
+}
+
+/* A slot's next sample, begun where the last one ended. With lanes, its
+ * camera ray waits for the extension queue's next intersect region, which
+ * writes a run of them at once (stages/generate_lanes.h) before tracing them. */
+WF_INLINE bool group_start_sample(PathState* path, const RenderParams* params, const Camera* camera, uint slot) {
+#ifdef WF_GROUP_LANES
+    return begin_camera_sample(path, params, slot);
+#else
+    return start_camera_sample(path, params, camera, slot);
+#endif
 }
 
 __kernel void group_wavefront(WF_STAGE_PARAMS) {
@@ -181,7 +195,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
-    if (own < params.pool_size && start_camera_sample(&path, &params, &camera, own)) {
+    if (own < params.pool_size && group_start_sample(&path, &params, &camera, own)) {
         samples_started[lid] = 1u;
         local_push(&queue[WF_QUEUE_EXTEND], own);
     }
@@ -197,7 +211,11 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     for (uint extending; (extending = queue[WF_QUEUE_EXTEND].length) > 0u;) {
         {
             uint slot[WF_TRACE_SLOTS];
-            const uint count = extension_slots_to_trace(&queue[WF_QUEUE_EXTEND], cameras, lid, slot);
+            bool camera_rays;
+            const uint count = extension_slots_to_trace(&queue[WF_QUEUE_EXTEND], cameras, lid, slot, &camera_rays);
+#ifdef WF_GROUP_LANES
+            if (count > 0u && camera_rays) write_camera_rays(&path, &params, &camera, slot, count);
+#endif
             if (count > 0u) intersect_paths(&path, slot, count, &scene);
             for (uint i = 0u; i < count; ++i) prefetch_surface(&scene, path_hit_triangle(&path, slot[i]));
         }
@@ -286,7 +304,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
             /* The slot's next sample, while it has one this launch. */
             if (samples_started[slot - first_slot] < WF_GROUP_SAMPLES &&
-                start_camera_sample(&path, &params, &camera, slot)) {
+                group_start_sample(&path, &params, &camera, slot)) {
                 ++samples_started[slot - first_slot];
                 local_push(&queue[WF_QUEUE_REGENERATE], slot);
             }

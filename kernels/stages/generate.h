@@ -13,26 +13,35 @@
 #include "wavefront/scene_types.h"
 #include "common/sample_values.h"
 #include "stages/stage_step.h"
+#include "lanes/lanes.h"
+
+#define WF_W 1
+#include "lanes/lane_width.inc"
+#include "stages/camera_ray.inc"
+#undef WF_W
+
+/* Begins the slot's next sample, if it has one left: its path state but for
+ * its camera ray (write_camera_ray). Returns whether it had one. */
+WF_INLINE bool begin_camera_sample(PathState* path, const RenderParams* params, uint slot) {
+    const uint work = path_samples_started(path, slot);
+    if (nth_sample(path, params, slot, work).sample >= params->spp) return false;
+    set_path_throughput(path, slot, (float3)(1.0f), 0u); /* no bounce yet */
+    start_path_radiance(path, slot, work + 1u);
+    return true;
+}
+
+/* The camera ray of the sample the slot began, into its ray. */
+WF_INLINE void write_camera_ray(PathState* path, const RenderParams* params, const Camera* camera, uint slot) {
+    const PathSample s = current_sample(path, params, slot);
+    const float4 u = sample_values(params, s.pixel, s.sample, 0u, WF_RNG_CAMERA);
+    path->ray_origin[slot] = (float4)(vload3(0, camera->origin), 0.0f);
+    path->ray_direction[slot] = (float4)(vec_to_float3(camera_direction_x1(camera, s.pixel, u.x, u.y)), 0.0f);
+}
 
 WF_INLINE bool start_camera_sample(PathState* path, const RenderParams* params, const Camera* camera,
                                 uint slot) {
-    const uint work = path_samples_started(path, slot);
-    const PathSample next = nth_sample(path, params, slot, work);
-    if (next.sample >= params->spp) return false;
-    const uint pixel = next.pixel;
-
-    const float4 u = sample_values(params, pixel, next.sample, 0u, WF_RNG_CAMERA);
-    const float x = ((float)(pixel % camera->width) + u.x) / (float)camera->width;
-    const float y = ((float)(pixel / camera->width) + u.y) / (float)camera->height;
-    const float sx = (2.0f * x - 1.0f) * camera->tan_half_fov_y * camera->aspect;
-    const float sy = (1.0f - 2.0f * y) * camera->tan_half_fov_y;
-    const float3 direction = normalize(vload3(0, camera->forward) + sx * vload3(0, camera->right) +
-                                       sy * vload3(0, camera->up));
-
-    path->ray_origin[slot] = (float4)(vload3(0, camera->origin), 0.0f);
-    path->ray_direction[slot] = (float4)(direction, 0.0f);
-    set_path_throughput(path, slot, (float3)(1.0f), 0u); /* no bounce yet */
-    start_path_radiance(path, slot, work + 1u);
+    if (!begin_camera_sample(path, params, slot)) return false;
+    write_camera_ray(path, params, camera, slot);
     return true;
 }
 
