@@ -163,11 +163,11 @@ WF_INLINE uint extension_slots_to_trace(__local const LocalQueue* q, uint camera
     return count;
 }
 
-/* A slot's next sample, begun where the last one ended. With lanes, its
- * camera ray waits for the extension queue's next intersect region, which
+/* A slot's next sample, begun where the last one ended. With lanes on a CPU,
+ * its camera ray waits for the extension queue's next intersect region, which
  * writes a run of them at once (stages/generate_lanes.h) before tracing them. */
 WF_INLINE bool group_start_sample(PathState* path, const RenderParams* params, const Camera* camera, uint slot) {
-#ifdef WF_GROUP_LANES
+#if WF_CAMERA_RAYS_IN_LANES
     return begin_camera_sample(path, params, slot);
 #else
     return start_camera_sample(path, params, camera, slot);
@@ -213,7 +213,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             uint slot[WF_TRACE_SLOTS];
             bool camera_rays;
             const uint count = extension_slots_to_trace(&queue[WF_QUEUE_EXTEND], cameras, lid, slot, &camera_rays);
-#ifdef WF_GROUP_LANES
+#if WF_CAMERA_RAYS_IN_LANES
             if (count > 0u && camera_rays) write_camera_rays(&path, &params, &camera, slot, count);
 #endif
             if (count > 0u) intersect_paths(&path, slot, count, &scene);

@@ -25,11 +25,6 @@ WavefrontIntegrator::WavefrontIntegrator(const OpenClDevice& device, const cl::P
     }
 }
 
-void WavefrontIntegrator::launch_consumers(QueueId queue, uint32_t items) {
-    for (int s = 0; s < kStageKernels; ++s)
-        if (kStageQueue[s] == queue) launch(static_cast<Stage>(s), items);
-}
-
 void WavefrontIntegrator::extend(uint32_t items) {
     for (int s = 0; s < kStageKernels; ++s) {
         if (kStageQueue[s] != WF_QUEUE_EXTEND) continue;
@@ -97,7 +92,7 @@ void WavefrontIntegrator::run_iterations(bool passes) {
         const bool stop = stopping(); // read once: it may change at any time
         if (extending + (stop ? 0u : regenerating) == 0) break;
         const bool generating = regenerating > 0 && !(passes && extending > 0) && !stop;
-        if (generating) launch_consumers(WF_QUEUE_REGENERATE, regenerating);
+        if (generating) launch(consumer_of(WF_QUEUE_REGENERATE), regenerating);
         extend(std::min(pool, extending + (generating ? regenerating : 0u)));
         // Shade consumed EXTEND and generate REGENERATE; passes keep the
         // slots freed so far in REGENERATE until the pass ends.

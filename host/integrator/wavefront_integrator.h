@@ -41,8 +41,6 @@ private:
     void launch(Stage stage, uint32_t items) { PathIntegrator::launch(stage, kernels_[stage], items); }
     void run_iterations(bool passes);
     void run_fullest_first();
-    // Every stage of the list that takes `queue`, over `items` paths.
-    void launch_consumers(QueueId queue, uint32_t items);
     // The stages that take the extension queue (intersect, shade) over
     // `items` paths of it, sorted by material before shade when the settings ask.
     void extend(uint32_t items);

@@ -207,7 +207,9 @@ WF_INLINE uint32_t sobol_owen_scramble(uint32_t x, uint32_t seed) {
     return sobol_reverse_bits(sobol_owen_scramble_reversed(sobol_reverse_bits(x), seed));
 }
 
-/* What coordinate d's scrambling seed hashes with the keys' hash. */
+/* The keys' hash, which scrambles the sample index, and what coordinate d's
+ * seed hashes with it; HASH is sobol_hash at the caller's width. */
+#define WF_SOBOL_KEY(HASH, seed, pixel, bounce, group) HASH(HASH(HASH(sobol_hash(seed) ^ (pixel)) ^ (bounce)) ^ (group))
 #define WF_SOBOL_SALT(d) (0x9e3779b9u * ((d) + 1u))
 
 /* Four numbers in [0, 1) for (pixel, sample, bounce, group): an Owen-scrambled
@@ -220,7 +222,7 @@ WF_INLINE uint32_t sobol_owen_scramble(uint32_t x, uint32_t seed) {
  * sobol_owen_scramble(sobol_bits(sobol_owen_scramble(sample, key), d), seed_d),
  * two reversals fewer. */
 WF_INLINE float4 sobol_uniform4(uint32_t seed, uint32_t pixel, uint32_t sample, uint32_t bounce, uint32_t group) {
-    const uint32_t key = sobol_hash(sobol_hash(sobol_hash(sobol_hash(seed) ^ pixel) ^ bounce) ^ group);
+    const uint32_t key = WF_SOBOL_KEY(sobol_hash, seed, pixel, bounce, group);
     const uint32_t reversed_index = sobol_owen_scramble_reversed(sobol_reverse_bits(sample), key);
     const uint4 seeds = sobol_hash4(make_uint4(key, key, key, key) ^
                                     make_uint4(WF_SOBOL_SALT(0u), WF_SOBOL_SALT(1u), WF_SOBOL_SALT(2u), WF_SOBOL_SALT(3u)));

@@ -11,7 +11,13 @@
 #include "stages/generate.h"
 #include "stages/shade_lanes.h"
 
-#ifdef WF_GROUP_LANES
+/* On a CPU, whose intersect work-items take a run of eight camera rays; a
+ * GPU's take one or two, for which lanes would cost more than they save. */
+#if defined(WF_GROUP_LANES) && !WF_GPU_TRAVERSAL
+#define WF_CAMERA_RAYS_IN_LANES 1
+#if WF_TRACE_SLOTS > WF_LANE_WIDTH
+#error "a run of camera rays (WF_TRACE_SLOTS) must fit the lanes"
+#endif
 #define WF_W WF_LANE_WIDTH
 #include "lanes/lane_width.inc"
 #include "stages/camera_ray.inc"
@@ -42,5 +48,7 @@ WF_INLINE void write_camera_rays(PathState* path, const RenderParams* params, co
 }
 
 #undef WF_W
+#else
+#define WF_CAMERA_RAYS_IN_LANES 0
 #endif
 #endif

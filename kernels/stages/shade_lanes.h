@@ -8,11 +8,12 @@
  * back (shade_lanes_get) for write_scatter. The light sample is taken in
  * lanes where every light is an emissive triangle whose emission is its
  * material's factor (WF_LIGHTS_IN_LANES), else by shade_light a path at a
- * time. Where no texture shapes a surface and no material has a coat or
- * sheen (WF_SURFACE_IN_LANES), every hit is put right after its arrival
+ * time. The lanes draw each path's BSDF numbers (shade_lanes_numbers). Where
+ * no texture shapes a surface and no material has a coat or sheen
+ * (WF_SURFACE_IN_LANES), every hit is put right after its arrival
  * (shade_lanes_put_arrival) and the lanes also find its surface
- * (stages/surface.inc) and draw its numbers; the emission it found comes
- * back with its scatter (shade_lanes_emission). Its answers are width 1's to the bit
+ * (stages/surface.inc) and draw its light's numbers; the emission it found
+ * comes back with its scatter (shade_lanes_emission). Its answers are width 1's to the bit
  * (tests/kernels/test_bsdf_kinds.cpp, tests/integrator/test_determinism.cpp),
  * so the group schedule makes the megakernel's bytes. The functions that take
  * the lanes' local memory are WF_GPU_INLINE: left as calls in a GPU's program
@@ -77,14 +78,14 @@ enum LaneField {
     WF_LANE_TRIANGLE = WF_LANE_LIGHT_NORMAL + 3, /* the arrival (WF_SURFACE_IN_LANES): a bit pattern, */
     WF_LANE_HIT, /* t, b1, b2 */
     WF_LANE_DIRECTION = WF_LANE_HIT + 3, WF_LANE_PDF_PREVIOUS = WF_LANE_DIRECTION + 3, WF_LANE_GOES_ON,
-    WF_LANE_PIXEL, WF_LANE_SAMPLE, WF_LANE_DEPTH, /* bit patterns */
+    WF_LANE_PIXEL, WF_LANE_SAMPLE, WF_LANE_DEPTH, /* bit patterns, the numbers' keys (put either way) */
     WF_LANE_INPUTS, /* the inputs above, the surface's emission and the scatter below */
     WF_LANE_EMITS = WF_LANE_INPUTS, WF_LANE_EMITTED,
     WF_LANE_SHADOW = WF_LANE_EMITTED + 3, WF_LANE_SHADOW_ORIGIN, WF_LANE_SHADOW_SEGMENT = WF_LANE_SHADOW_ORIGIN + 3,
     WF_LANE_SHADOW_LIGHT = WF_LANE_SHADOW_SEGMENT + 3, WF_LANE_CONTINUES = WF_LANE_SHADOW_LIGHT + 3,
     WF_LANE_NEXT_THROUGHPUT, WF_LANE_RAY_ORIGIN = WF_LANE_NEXT_THROUGHPUT + 3,
     WF_LANE_RAY_DIRECTION = WF_LANE_RAY_ORIGIN + 3, WF_LANE_RAY_PDF = WF_LANE_RAY_DIRECTION + 3,
-    WF_LANE_ROULETTE_U, /* not the lanes' input: handed from shade_lanes_put to shade_lanes_get */
+    WF_LANE_ROULETTE_U, /* not the lanes' input: drawn by shade_lanes_numbers for shade_lanes_get */
     WF_LANE_FIELDS
 };
 #undef WF_LANE_PARAM_REAL

@@ -108,9 +108,9 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
             << "group, lane width " << width;
     }
     settings.lane_width = RenderSettings{}.lane_width;
-    // The lanes take the Sobol sampler's numbers (the default) from each path
-    // and hash the independent sampler's themselves (kernels/stages/shade_lanes.h):
-    // both ways, the same bytes.
+    // The lanes draw both samplers' numbers themselves, the Sobol sampler's
+    // (the default) and the independent sampler's (kernels/stages/shade_lanes.h,
+    // generate_lanes.h): either way, the bytes of a path at a time.
     settings.sampler = WF_SAMPLER_INDEPENDENT;
     const RenderOutput independent = render(settings);
     settings.schedule = Schedule::Refill;

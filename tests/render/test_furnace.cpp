@@ -26,7 +26,7 @@ namespace wf {
 namespace {
 
 // The direction of the camera ray through image point (x, y) in [0, 1]^2, as
-// kernels/stages/generate.h computes it.
+// kernels/stages/camera_ray.inc computes it.
 glm::vec3 camera_ray(const SceneCamera& c, ImageSize size, float x, float y) {
     const glm::vec3 forward = glm::normalize(c.forward);
     const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
