@@ -17,13 +17,14 @@ constant bank: 117 KiB of albedo tables once kept every program off an H200
 (bench/results/gpu-run.md). Registers there come from the driver itself
 (bench/gpu.sh with WF_KERNEL_OPTIONS=-cl-nv-verbose).
 
-Usage: python3 bench/gpu_isa.py [--target gfx90a|gfx1030|nvptx] [--json FILE]
+Usage: python3 bench/gpu_isa.py [--target gfx90a|gfx1100|gfx1030|nvptx] [--json FILE]
                                 [--markdown FILE] [--check] [--tool PATH] [SCENE ...]
 --check: exit 1 unless every program compiles (and, for nvptx, fits the
 constant bank) (the CI test); prints nothing else. Needs clang-15 and
 rocm-device-libs (apt-get install clang-15 rocm-device-libs). gfx90a is CDNA2
-(MI200), gfx1030 RDNA2; Debian 12's rocm-device-libs (5.2) has no RDNA3
-(gfx1100) libraries.
+(MI200), gfx1100 RDNA3, gfx1030 RDNA2. Debian 12's rocm-device-libs (5.2)
+predate RDNA3: of its libraries only the file naming the ISA version is
+missing, one constant, which this script compiles (device_libraries).
 """
 
 import argparse
@@ -42,6 +43,9 @@ PROGRAMS = [("wavefront", ["--integrator", "wavefront"]),
             ("wavefront group", ["--integrator", "wavefront", "--schedule", "group"]),
             ("megakernel", ["--integrator", "megakernel"])]
 NVIDIA_CONSTANT_BANK = 64 * 1024
+# ISA versions newer than Debian 12's rocm-device-libs, as ROCm's own
+# oclc/src/isa_version_*.cl define them (major, minor, stepping in decimal).
+ISA_VERSIONS = {"gfx1100": 11000, "gfx1101": 11001, "gfx1102": 11002}
 FIELDS = {"SGPRs": "sgprs", "VGPRs": "vgprs", "ScratchSize [bytes/lane]": "scratch",
           "LDS Size [bytes/block]": "lds", "Occupancy [waves/SIMD]": "waves"}
 
@@ -53,12 +57,33 @@ def kernel_source(tool, scene, flags, out):
     return done.stdout.strip()
 
 
-def compile_for(target, source, options):
+def device_libraries(target, tmp):
+    """The folder of device libraries for `target`: Debian's, or where
+    Debian's lack the target's oclc_isa_version file (ISA_VERSIONS), a
+    folder of links to them beside that file, compiled from its constant."""
+    isa_file = f"oclc_isa_version_{target[3:]}.bc"
+    if os.path.exists(os.path.join(BITCODE, isa_file)) or target not in ISA_VERSIONS:
+        return BITCODE
+    folder = os.path.join(tmp, "bitcode")
+    if not os.path.isdir(folder):
+        os.mkdir(folder)
+        for name in os.listdir(BITCODE):
+            os.symlink(os.path.join(BITCODE, name), os.path.join(folder, name))
+        source = os.path.join(tmp, "isa_version.cl")
+        with open(source, "w") as f:
+            f.write(f"const __constant int __oclc_ISA_version = {ISA_VERSIONS[target]};\n")
+        subprocess.run(["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "amdgcn-amd-amdhsa", f"-mcpu={target}",
+                        "-nogpulib", "-fvisibility=protected", "-O3", "-emit-llvm", "-c", source,
+                        "-o", os.path.join(folder, isa_file)], check=True)
+    return folder
+
+
+def compile_for(target, source, options, libraries):
     """Each kernel's figures, or raises CalledProcessError with the compiler's
     errors. Compiled and linked into a code object, as a GPU driver would: a
     function left undefined (C99 inline not inlined) fails only at the link."""
     command = ["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "amdgcn-amd-amdhsa", f"-mcpu={target}",
-               f"--rocm-device-lib-path={BITCODE}", "-Xclang", "-finclude-default-header", "-O3", source,
+               f"--rocm-device-lib-path={libraries}", "-Xclang", "-finclude-default-header", "-O3", source,
                "-o", source + ".hsaco", "-Rpass-analysis=kernel-resource-usage"] + options.split()
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
@@ -125,7 +150,8 @@ def main():
                             failures.append(f"{name}, {program}: {const} bytes of __constant data, more than "
                                             f"NVIDIA's {NVIDIA_CONSTANT_BANK}-byte constant bank")
                         continue
-                    kernels = [k for k in compile_for(args.target, source, options) if k["kernel"] in names]
+                    kernels = [k for k in compile_for(args.target, source, options, device_libraries(args.target, tmp))
+                               if k["kernel"] in names]
                 except subprocess.CalledProcessError as e:
                     errors = [line for line in e.stderr.splitlines() if "error" in line][:3]
                     failures.append(f"{name}, {program}: " + ("; ".join(errors) or "clang-15 failed"))
