@@ -14,7 +14,11 @@
 // times are the kernels' own, from profiling events; Embree's the wall time of
 // T threads. Each is the best of three runs after one warm-up, which for the
 // kernels is where PoCL compiles them for the launch. PoCL is held to T
-// threads too (POCL_MAX_PTHREAD_COUNT), unless the environment already says.
+// threads too (POCL_MAX_PTHREAD_COUNT), each pinned to a core
+// (POCL_AFFINITY), unless the environment already says: unpinned, the
+// scheduler moved them between launches this short (tens of milliseconds),
+// and the same kernels read from 16 to 20 M rays/s from run to run where
+// Embree's threads held steady (bench/results/ray-throughput.md).
 //
 // Exit codes as for `wavefront`: 0, 1 (the machine failed, or the tracers
 // disagree on more than 0.1% of some set's rays, not counting the shadow
@@ -254,6 +258,7 @@ int run(const Options& options) {
     const Scene flat = scene.instances.empty() ? Scene{} : flattened(scene);
     const Scene& placed = scene.instances.empty() ? scene : flat;
     setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(options.threads).c_str(), 0);
+    setenv("POCL_AFFINITY", "1", 0);
     const OpenClDevice device = open_device(options.device);
     check_shared_layouts(device);
     const SceneBuild build(scene); // as a render builds it, the BVH's build timed
