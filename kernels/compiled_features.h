@@ -25,10 +25,15 @@
 #ifndef WF_HAS_ENVIRONMENT
 #define WF_HAS_ENVIRONMENT 1
 #endif
-/* The BSDF kind's lobes beyond the base and its interface's reflection
- * (bsdf/kinds/layered.inc, bsdf/lobes/): KHR_materials_transmission,
- * KHR_materials_clearcoat and KHR_materials_sheen. The general BSDF
- * (bsdf/bsdf.h) also leaves out the clear coat and sheen where theirs is 0. */
+/* The BSDF kind's lobes beyond the diffuse base (bsdf/kinds/layered.inc,
+ * bsdf/lobes/): its interface's reflection (a metal, or a dielectric layer
+ * whose KHR_materials_specular factor is above 0; nothing else reflects
+ * there), KHR_materials_transmission, KHR_materials_clearcoat and
+ * KHR_materials_sheen. The general BSDF (bsdf/bsdf.h) also leaves out the
+ * clear coat and sheen where theirs is 0. */
+#ifndef WF_HAS_SPECULAR
+#define WF_HAS_SPECULAR 1
+#endif
 #ifndef WF_HAS_TRANSMISSION
 #define WF_HAS_TRANSMISSION 1
 #endif

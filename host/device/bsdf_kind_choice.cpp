@@ -3,6 +3,8 @@
 
 namespace wf {
 
+bool has_specular(const SceneMaterial& m) { return m.metallic > 0.0f || m.specular > 0.0f || has_transmission(m); }
+
 bool has_transmission(const SceneMaterial& m) { return m.transmission > 0.0f; }
 
 bool has_clearcoat(const SceneMaterial& m) { return m.clearcoat > 0.0f; }

@@ -13,7 +13,10 @@ namespace wf {
 
 uint32_t bsdf_kind_of(const SceneMaterial& m);
 
-// Whether the material has the lobe at all (its factor above 0).
+// Whether the material has the lobe at all (its factor above 0). Its
+// interface reflects where it is a metal, its dielectric layer has a
+// specular factor, or it transmits (through that interface).
+bool has_specular(const SceneMaterial& m);
 bool has_transmission(const SceneMaterial& m);
 bool has_clearcoat(const SceneMaterial& m);
 bool has_sheen(const SceneMaterial& m);

@@ -21,6 +21,7 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
             {f.emissive_triangles, {"WF_HAS_EMISSIVE_TRIANGLES", "emissive triangles"}},
             {f.punctual_lights, {"WF_HAS_PUNCTUAL_LIGHTS", "punctual lights"}},
             {f.environment, {"WF_HAS_ENVIRONMENT", "environment"}},
+            {f.specular, {"WF_HAS_SPECULAR", "specular"}},
             {f.transmission, {"WF_HAS_TRANSMISSION", "transmission"}},
             {f.clearcoat, {"WF_HAS_CLEARCOAT", "clear coat"}},
             {f.sheen, {"WF_HAS_SHEEN", "sheen"}},
@@ -32,13 +33,14 @@ std::vector<std::pair<bool, std::pair<const char*, const char*>>> listed(const S
 
 SceneFeatures scene_features(const Scene& scene) {
     SceneFeatures f;
-    f.textures = f.normal_maps = f.alpha_mask = f.transmission = f.clearcoat = f.sheen = false;
+    f.textures = f.normal_maps = f.alpha_mask = f.specular = f.transmission = f.clearcoat = f.sheen = false;
     f.bsdf_kinds.fill(false);
     for (const SceneMaterial& m : scene.materials) {
         f.bsdf_kinds[bsdf_kind_of(m)] = true;
         for (const TextureRef& ref : m.textures) f.textures = f.textures || ref.texture >= 0;
         f.normal_maps = f.normal_maps || m.textures[WF_TEXTURE_NORMAL].texture >= 0;
         f.alpha_mask = f.alpha_mask || m.alpha_mode == WF_ALPHA_MASK;
+        f.specular = f.specular || has_specular(m);
         f.transmission = f.transmission || has_transmission(m);
         f.clearcoat = f.clearcoat || has_clearcoat(m);
         f.sheen = f.sheen || has_sheen(m);

@@ -23,6 +23,7 @@ struct SceneFeatures {
     bool emissive_triangles = true; // any triangle emits
     bool punctual_lights = true;    // KHR_lights_punctual
     bool environment = true;        // an environment light
+    bool specular = true;           // any material reflects at its interface: a metal, a specular layer, or it transmits
     bool transmission = true;       // any material transmits (KHR_materials_transmission)
     bool clearcoat = true;          // any material has a clear coat (KHR_materials_clearcoat)
     bool sheen = true;              // any material has a sheen (KHR_materials_sheen)

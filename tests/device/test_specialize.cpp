@@ -41,25 +41,38 @@ void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& ca
 
 TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
-    EXPECT_EQ(describe_features(scene_features(cornell)), "layered BSDF, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(cornell)), "layered BSDF, emissive triangles, specular");
     EXPECT_EQ(feature_defines(scene_features(cornell)),
               "-DWF_HAS_BSDF_LAYERED=1 -DWF_HAS_TEXTURES=0 -DWF_HAS_NORMAL_MAPS=0 -DWF_HAS_ALPHA_MASK=0 -DWF_HAS_VERTEX_COLORS=0 "
               "-DWF_HAS_EMISSIVE_TRIANGLES=1 "
-              "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0 -DWF_HAS_TRANSMISSION=0 -DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0 "
+              "-DWF_HAS_PUNCTUAL_LIGHTS=0 -DWF_HAS_ENVIRONMENT=0 -DWF_HAS_SPECULAR=1 -DWF_HAS_TRANSMISSION=0 "
+              "-DWF_HAS_CLEARCOAT=0 -DWF_HAS_SHEEN=0 "
               "-DWF_HAS_INSTANCES=0");
     const Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
-    EXPECT_EQ(describe_features(scene_features(helmet)), "layered BSDF, textures, normal maps, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(helmet)),
+              "layered BSDF, textures, normal maps, emissive triangles, specular");
     EXPECT_EQ(describe_features(SceneFeatures::all()),
               "layered BSDF, textures, normal maps, alpha mask, vertex colours, emissive triangles, punctual lights, "
-              "environment, transmission, clear coat, sheen");
+              "environment, specular, transmission, clear coat, sheen");
     const Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
     EXPECT_EQ(describe_features(scene_features(car)),
-              "layered BSDF, textures, normal maps, emissive triangles, transmission, clear coat, sheen");
+              "layered BSDF, textures, normal maps, emissive triangles, specular, transmission, clear coat, sheen");
+    Scene lambertian = cornell;
+    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f; // KHR_materials_specular's factor 0
+    EXPECT_EQ(describe_features(scene_features(lambertian)), "layered BSDF, emissive triangles");
 }
 
 TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
     expect_specialized_equals_generic(cornell, *cornell.camera, "Cornell box");
+    // No interface reflects: the kind's base alone, its albedo tables unread.
+    // One wall black, whose base chooses the interface that reflects nothing.
+    Scene lambertian = cornell;
+    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f;
+    lambertian.materials[1].base_color = glm::vec3(0.0f);
+    expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a black wall");
+    lambertian.materials[1].roughness = 0.0f; // a smooth black wall: a Dirac interface over no albedo
+    expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a smooth black wall");
 
     Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
     helmet.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
