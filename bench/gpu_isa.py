@@ -8,7 +8,8 @@ kernel-resource-usage remarks give them.
 
 Programs: the wavefront (the GPU's default schedule), the wavefront's group
 schedule, and the megakernel, each for the feature set of every scene given
-(default: the repository's scenes and every feature at once).
+(default: the repository's scenes, the Cornell box with every specular
+factor 0 (lambertian_cornell), and every feature at once).
 
 --target nvptx compiles each program to NVIDIA's PTX instead (clang's
 nvptx64-nvidia-nvcl, left unlinked: the driver supplies OpenCL's built-ins)
@@ -59,23 +60,41 @@ def kernel_source(tool, scene, flags, out):
 
 def device_libraries(target, tmp):
     """The folder of device libraries for `target`: Debian's, or where
-    Debian's lack the target's oclc_isa_version file (ISA_VERSIONS), a
-    folder of links to them beside that file, compiled from its constant."""
+    Debian's lack the target's oclc_isa_version file (ISA_VERSIONS), a new
+    folder in `tmp` of links to them beside that file, compiled from its
+    constant. Exits with the compiler's error if that fails."""
     isa_file = f"oclc_isa_version_{target[3:]}.bc"
     if os.path.exists(os.path.join(BITCODE, isa_file)) or target not in ISA_VERSIONS:
         return BITCODE
     folder = os.path.join(tmp, "bitcode")
-    if not os.path.isdir(folder):
-        os.mkdir(folder)
-        for name in os.listdir(BITCODE):
-            os.symlink(os.path.join(BITCODE, name), os.path.join(folder, name))
-        source = os.path.join(tmp, "isa_version.cl")
-        with open(source, "w") as f:
-            f.write(f"const __constant int __oclc_ISA_version = {ISA_VERSIONS[target]};\n")
-        subprocess.run(["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "amdgcn-amd-amdhsa", f"-mcpu={target}",
-                        "-nogpulib", "-fvisibility=protected", "-O3", "-emit-llvm", "-c", source,
-                        "-o", os.path.join(folder, isa_file)], check=True)
+    os.mkdir(folder)
+    for name in os.listdir(BITCODE):
+        os.symlink(os.path.join(BITCODE, name), os.path.join(folder, name))
+    source = os.path.join(tmp, "isa_version.cl")
+    with open(source, "w") as f:
+        f.write(f"const __constant int __oclc_ISA_version = {ISA_VERSIONS[target]};\n")
+    done = subprocess.run(["clang-15", "-x", "cl", "-cl-std=CL1.2", "-target", "amdgcn-amd-amdhsa",
+                           f"-mcpu={target}", "-nogpulib", "-fvisibility=protected", "-O3", "-emit-llvm", "-c",
+                           source, "-o", os.path.join(folder, isa_file)], capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"gpu_isa.py: cannot compile {isa_file} for {target}: " + done.stderr.strip().splitlines()[0]
+                 if done.stderr.strip() else f"gpu_isa.py: cannot compile {isa_file} for {target}")
     return folder
+
+
+def lambertian_cornell(tmp):
+    """scenes/cornell-box.gltf with every material's KHR_materials_specular
+    factor 0, as bench/mitsuba_compare.py renders it: a program without the
+    interface (WF_HAS_SPECULAR 0), which no file in scenes/ makes."""
+    with open(os.path.join(ROOT, "scenes", "cornell-box.gltf")) as f:
+        doc = json.load(f)
+    for m in doc["materials"]:
+        m.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
+    doc.setdefault("extensionsUsed", []).append("KHR_materials_specular")
+    path = os.path.join(tmp, "cornell-box-lambertian.gltf")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    return path
 
 
 def compile_for(target, source, options, libraries):
@@ -131,10 +150,11 @@ def main():
     args = parser.parse_args()
     if not shutil.which("clang-15") or not os.path.isdir(BITCODE):
         sys.exit("gpu_isa.py: needs clang-15 and rocm-device-libs (apt-get install clang-15 rocm-device-libs)")
-    scenes = args.scenes or sorted(glob.glob(os.path.join(ROOT, "scenes", "*.gltf"))) + [None]
-
     rows, failures = [], []
     with tempfile.TemporaryDirectory() as tmp:
+        scenes = args.scenes or sorted(glob.glob(os.path.join(ROOT, "scenes", "*.gltf"))) + [lambertian_cornell(tmp),
+                                                                                              None]
+        libraries = device_libraries(args.target, tmp) if args.target != "nvptx" else None
         for scene in scenes:
             name = "all features" if scene is None else os.path.basename(scene)
             for program, flags in PROGRAMS:
@@ -150,7 +170,7 @@ def main():
                             failures.append(f"{name}, {program}: {const} bytes of __constant data, more than "
                                             f"NVIDIA's {NVIDIA_CONSTANT_BANK}-byte constant bank")
                         continue
-                    kernels = [k for k in compile_for(args.target, source, options, device_libraries(args.target, tmp))
+                    kernels = [k for k in compile_for(args.target, source, options, libraries)
                                if k["kernel"] in names]
                 except subprocess.CalledProcessError as e:
                     errors = [line for line in e.stderr.splitlines() if "error" in line][:3]

@@ -26,10 +26,10 @@
 #define WF_HAS_ENVIRONMENT 1
 #endif
 /* The BSDF kind's lobes beyond the diffuse base (bsdf/kinds/layered.inc,
- * bsdf/lobes/): its interface's reflection (a metal, or a dielectric layer
- * whose KHR_materials_specular factor is above 0; nothing else reflects
- * there), KHR_materials_transmission, KHR_materials_clearcoat and
- * KHR_materials_sheen. The general BSDF (bsdf/bsdf.h) also leaves out the
+ * bsdf/lobes/): its interface's reflection (a metal, a dielectric layer
+ * whose KHR_materials_specular factor is above 0, or a material that
+ * transmits through it), KHR_materials_transmission, KHR_materials_clearcoat
+ * and KHR_materials_sheen. The general BSDF (bsdf/bsdf.h) also leaves out the
  * clear coat and sheen where theirs is 0. */
 #ifndef WF_HAS_SPECULAR
 #define WF_HAS_SPECULAR 1
@@ -42,6 +42,9 @@
 #endif
 #ifndef WF_HAS_SHEEN
 #define WF_HAS_SHEEN 1
+#endif
+#if WF_HAS_TRANSMISSION && !WF_HAS_SPECULAR
+#error "transmission goes through the interface: WF_HAS_TRANSMISSION needs WF_HAS_SPECULAR"
 #endif
 /* Shared meshes placed by instances: a two-level BVH (host/bvh/instance_bvh.h).
  * Not a feature the generic program may have on, but the layout of the

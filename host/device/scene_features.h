@@ -2,8 +2,10 @@
 // kernels are compiled with (issue 6: leave out what a scene does not need).
 // Each is a -D define of the program: code for an absent feature is not
 // compiled, and what it would have returned (a texture of 1, an unbent
-// normal, a hit that passes, a light kind never chosen) is exactly what the
-// generic program computes for such a scene, so the images are bit-identical.
+// normal, a hit that passes, a light kind never chosen, an interface that
+// reflects nothing) is exactly what the generic program computes for such a
+// scene, or (the last, for a black base) differs only where a zero BSDF
+// value ends the path either way, so the images are bit-identical.
 // Kept coarse on purpose: a handful of switches, not a define per parameter.
 #pragma once
 

@@ -1,7 +1,8 @@
 // test_specialize.cpp — kernels compiled for a scene's features
 // (host/device/scene_features.h) render exactly what the generic kernels render:
-// the code left out only ever returned neutral values for such a scene, and
-// random numbers do not depend on the features. Bit for bit, on scenes that
+// the code left out only ever returned neutral values for such a scene (or, for
+// an interface that reflects nothing over a black base, values a zero BSDF makes
+// unused), and random numbers do not depend on the features. Bit for bit, on scenes that
 // between them switch every feature on and off. And a GPU's kernels, run on
 // the CPU device, render the CPU's kernels' bits.
 #include <cstdlib>
@@ -26,10 +27,12 @@ bool same_bits(const Image& a, const Image& b) {
     return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
 }
 
-void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& camera, const std::string& what) {
+void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& camera, const std::string& what,
+                                      Integrator integrator = Integrator::Wavefront) {
     RenderSettings settings;
     settings.spp = 4;
     settings.seed = 3;
+    settings.integrator = integrator;
     const RenderOutput specialized = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
     settings.specialize = false;
     const RenderOutput generic = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
@@ -67,12 +70,22 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
     expect_specialized_equals_generic(cornell, *cornell.camera, "Cornell box");
     // No interface reflects: the kind's base alone, its albedo tables unread.
     // One wall black, whose base chooses the interface that reflects nothing.
+    // Both integrators: the group schedule's lanes, and width 1.
     Scene lambertian = cornell;
     for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f;
     lambertian.materials[1].base_color = glm::vec3(0.0f);
-    expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a black wall");
-    lambertian.materials[1].roughness = 0.0f; // a smooth black wall: a Dirac interface over no albedo
-    expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a smooth black wall");
+    for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
+        const std::string name = std::string(", ") + integrator_name(integrator);
+        expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a black wall" + name,
+                                          integrator);
+        Scene smooth = lambertian;
+        smooth.materials[1].roughness = 0.0f; // a Dirac interface over no albedo
+        expect_specialized_equals_generic(smooth, *cornell.camera, "a smooth black wall" + name, integrator);
+        Scene coated = lambertian; // a black base under a smooth coat: p_coat 1 (lobes/coat.inc)
+        coated.materials[1].clearcoat = 1.0f;
+        expect_specialized_equals_generic(coated, *cornell.camera, "a black wall under a clear coat" + name,
+                                          integrator);
+    }
 
     Scene helmet = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/DamagedHelmet/DamagedHelmet.glb");
     helmet.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
@@ -136,9 +149,12 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
     glass.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
     const SceneCamera glass_camera = test::camera_looking({0, 0, 3.5f}, {0, 0, -1}, {0, 1, 0}, 0.7f);
+    Scene lambertian = cornell; // no interface to reflect at (WF_HAS_SPECULAR 0)
+    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f;
     for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
         expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball", integrator);
         expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", integrator);
+        expect_gpu_kernels_equal_cpu_kernels(lambertian, *cornell.camera, "Lambertian Cornell box", integrator);
     }
     expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball, 8 lanes", Integrator::Wavefront, 8);
 }
