@@ -32,11 +32,14 @@ import argparse
 import glob
 import json
 import os
+import pathlib
 import re
 import shutil
 import subprocess
 import sys
 import tempfile
+
+from gltf_variants import lambertian_gltf
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BITCODE = "/usr/lib/x86_64-linux-gnu/amdgcn/bitcode"
@@ -83,17 +86,13 @@ def device_libraries(target, tmp):
 
 
 def lambertian_cornell(tmp):
-    """scenes/cornell-box.gltf with every material's KHR_materials_specular
-    factor 0, as bench/mitsuba_compare.py renders it: a program without the
-    interface (WF_HAS_SPECULAR 0), which no file in scenes/ makes."""
+    """scenes/cornell-box.gltf as bench/mitsuba_compare.py renders it
+    (lambertian_gltf): a program without the interface (WF_HAS_SPECULAR 0),
+    which no file in scenes/ makes."""
     with open(os.path.join(ROOT, "scenes", "cornell-box.gltf")) as f:
         doc = json.load(f)
-    for m in doc["materials"]:
-        m.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
-    doc.setdefault("extensionsUsed", []).append("KHR_materials_specular")
     path = os.path.join(tmp, "cornell-box-lambertian.gltf")
-    with open(path, "w") as f:
-        json.dump(doc, f)
+    lambertian_gltf(doc, pathlib.Path(path))
     return path
 
 

@@ -49,6 +49,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gltf_variants import lambertian_gltf
+
 REPO = Path(__file__).resolve().parents[1]
 # (renderer, sampler) of the efficiency table; the time table compares the two independent ones.
 EFFICIENCY_CONFIGS = [("ours", "independent"), ("ours", "sobol"), ("Mitsuba", "independent"), ("Mitsuba", "ldsampler")]
@@ -84,17 +86,6 @@ def quaternion_rotate(q, v):
     u = np.array([x, y, z])
     v = np.asarray(v, dtype=float)
     return v + 2.0 * np.cross(u, np.cross(u, v) + w * v)
-
-
-def lambertian_gltf(doc, path):
-    """The same document with specularFactor 0 on every material."""
-    doc = json.loads(json.dumps(doc))
-    for m in doc["materials"]:
-        m.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
-    used = doc.setdefault("extensionsUsed", [])
-    if "KHR_materials_specular" not in used:
-        used.append("KHR_materials_specular")
-    path.write_text(json.dumps(doc))
 
 
 def mitsuba_scene(mi, doc, folder, width, height, sampler="independent"):

@@ -42,6 +42,13 @@ void expect_specialized_equals_generic(const Scene& scene, const SceneCamera& ca
     EXPECT_EQ(specialized.summary.stats.shadow_rays, generic.summary.stats.shadow_rays) << what;
 }
 
+// The scene with KHR_materials_specular's factor 0 on every material: with no
+// metal or transmission, nothing reflects at an interface (WF_HAS_SPECULAR 0).
+Scene lambertian(Scene scene) {
+    for (SceneMaterial& m : scene.materials) m.specular = 0.0f;
+    return scene;
+}
+
 TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
     EXPECT_EQ(describe_features(scene_features(cornell)), "layered BSDF, emissive triangles, specular");
@@ -60,9 +67,7 @@ TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
     EXPECT_EQ(describe_features(scene_features(car)),
               "layered BSDF, textures, normal maps, emissive triangles, specular, transmission, clear coat, sheen");
-    Scene lambertian = cornell;
-    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f; // KHR_materials_specular's factor 0
-    EXPECT_EQ(describe_features(scene_features(lambertian)), "layered BSDF, emissive triangles");
+    EXPECT_EQ(describe_features(scene_features(lambertian(cornell))), "layered BSDF, emissive triangles");
 }
 
 TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
@@ -71,17 +76,16 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
     // No interface reflects: the kind's base alone, its albedo tables unread.
     // One wall black, whose base chooses the interface that reflects nothing.
     // Both integrators: the group schedule's lanes, and width 1.
-    Scene lambertian = cornell;
-    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f;
-    lambertian.materials[1].base_color = glm::vec3(0.0f);
+    Scene black_wall = lambertian(cornell);
+    black_wall.materials[1].base_color = glm::vec3(0.0f);
     for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
         const std::string name = std::string(", ") + integrator_name(integrator);
-        expect_specialized_equals_generic(lambertian, *cornell.camera, "Lambertian Cornell box, a black wall" + name,
+        expect_specialized_equals_generic(black_wall, *cornell.camera, "Lambertian Cornell box, a black wall" + name,
                                           integrator);
-        Scene smooth = lambertian;
+        Scene smooth = black_wall;
         smooth.materials[1].roughness = 0.0f; // a Dirac interface over no albedo
         expect_specialized_equals_generic(smooth, *cornell.camera, "a smooth black wall" + name, integrator);
-        Scene coated = lambertian; // a black base under a smooth coat: p_coat 1 (lobes/coat.inc)
+        Scene coated = black_wall; // a black base under a smooth coat: p_coat 1 (lobes/coat.inc)
         coated.materials[1].clearcoat = 1.0f;
         expect_specialized_equals_generic(coated, *cornell.camera, "a black wall under a clear coat" + name,
                                           integrator);
@@ -149,12 +153,12 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
     glass.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
     const SceneCamera glass_camera = test::camera_looking({0, 0, 3.5f}, {0, 0, -1}, {0, 1, 0}, 0.7f);
-    Scene lambertian = cornell; // no interface to reflect at (WF_HAS_SPECULAR 0)
-    for (SceneMaterial& m : lambertian.materials) m.specular = 0.0f;
+    const Scene lambertian_cornell = lambertian(cornell);
     for (const Integrator integrator : {Integrator::Wavefront, Integrator::Megakernel}) {
         expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball", integrator);
         expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", integrator);
-        expect_gpu_kernels_equal_cpu_kernels(lambertian, *cornell.camera, "Lambertian Cornell box", integrator);
+        expect_gpu_kernels_equal_cpu_kernels(lambertian_cornell, *cornell.camera, "Lambertian Cornell box",
+                                             integrator);
     }
     expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball, 8 lanes", Integrator::Wavefront, 8);
 }
