@@ -17,6 +17,9 @@
 #include "stages/sort_by_material.h"
 #include "stages/shade.h"
 #include "stages/shade_lanes.h"
+#if WF_SHADE_IN_TWO
+#include "stages/shade_record.h"
+#endif
 #include "stages/generate_lanes.h"
 #include "stages/intersect_shadow.h"
 #include "stages/roulette.h"
@@ -63,13 +66,30 @@ __kernel void scatter_materials(WF_STAGE_PARAMS, __global uint* key_starts, __gl
 }
 
 /* Each kernel pushes its paths to the queues its stage function returns, every
- * work-item to each of the stage's next queues in turn (the pushes hold barriers). */
-__kernel void shade(WF_STAGE_PARAMS) {
+ * work-item to each of the stage's next queues in turn (the pushes hold
+ * barriers). A GPU's program on the global-queue schedules (WF_SHADE_IN_TWO)
+ * runs shade as two kernels over the extension queue (stages/shade_record.h):
+ * surface leaves each path's record, shade takes it on. */
+#if WF_SHADE_IN_TWO
+__kernel void surface(WF_STAGE_PARAMS, __global float4* shade_records) {
+    WF_BIND_STAGE_ARGS;
+    uint slot;
+    if (queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot))
+        shade_surface_path(&path, &params, slot, &scene, &film, shade_records);
+}
+#define WF_SHADE_PARAMS WF_STAGE_PARAMS, __global float4* shade_records
+#define WF_SHADE_ONE_PATH shade_bsdf_path(&path, &params, slot, &scene, shade_records)
+#else
+#define WF_SHADE_PARAMS WF_STAGE_PARAMS
+#define WF_SHADE_ONE_PATH shade_path(&path, &params, slot, &scene, &film)
+#endif
+
+__kernel void shade(WF_SHADE_PARAMS) {
     WF_BIND_STAGE_ARGS;
     __local uint scratch[WF_QUEUE_SCRATCH];
     uint slot;
     const bool active = queue_slot(params.pool_size, queues, counters, WF_QUEUE_EXTEND, &slot);
-    const uint next = active ? shade_path(&path, &params, slot, &scene, &film) : WF_QUEUE_COUNT;
+    const uint next = active ? WF_SHADE_ONE_PATH : WF_QUEUE_COUNT;
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], active ? 1u : 0u, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_SHADOW, slot, next == WF_QUEUE_SHADOW, scratch);
     queue_push(queues, counters, params.pool_size, WF_QUEUE_CONTINUE, slot, next == WF_QUEUE_CONTINUE, scratch);

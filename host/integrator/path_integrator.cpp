@@ -80,6 +80,10 @@ Schedule default_schedule(const std::string& device_type, bool sort_materials) {
     return device_type == "cpu" && !sort_materials ? Schedule::Group : Schedule::Refill;
 }
 
+bool shade_in_two_kernels(Integrator integrator, Schedule schedule, bool gpu_kernels) {
+    return gpu_kernels && integrator == Integrator::Wavefront && schedule != Schedule::Group;
+}
+
 uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note) {
     const uint32_t wanted = requested ? requested : default_size;
     const uint32_t size = std::min(wanted, pixel_count);
@@ -91,14 +95,17 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pi
 
 uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes) {
     const size_t room = device_memory > used_bytes ? (device_memory - used_bytes) / 2 : 0;
-    const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / (WF_QUEUE_COUNT * sizeof(cl_uint)));
+    static_assert(WF_SHADE_RECORD_ROWS * sizeof(cl_float4) > WF_QUEUE_COUNT * sizeof(cl_uint),
+                  "the shade records are the largest buffer a path has a share of");
+    const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / PathPool::shade_record_bytes_per_path());
     return static_cast<uint32_t>(std::min<size_t>(pool, fits));
 }
 
 PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
                                const RenderSettings& settings)
     : device_(device), settings_(settings), scene_(scene), camera_(camera),
-      pool_(device.context, settings.pool_size),
+      pool_(device.context, settings.pool_size,
+            shade_in_two_kernels(settings.integrator, settings.schedule, settings.kernels == KernelKind::Gpu)),
       film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers, settings.aovs) {
     params_.pixel_count = camera.width * camera.height;
     params_.first_pixel = 0;

@@ -124,14 +124,22 @@ uint32_t default_pool_size(const std::string& device_type, unsigned compute_unit
 // (which needs the global queue), refill.
 Schedule default_schedule(const std::string& device_type, bool sort_materials);
 
+// Whether a render runs shade as two kernels, surface then shade, with a
+// record a path between them (include/wavefront/shade_record.h): a GPU's
+// program on the global-queue schedules, where one kernel's registers cost
+// occupancy. A CPU's would only pay for the record's memory (refill 15-20%
+// slower on the Cornell box), and the megakernel and the group schedule keep
+// a path in one kernel.
+bool shade_in_two_kernels(Integrator integrator, Schedule schedule, bool gpu_kernels);
+
 // The pool size used for a render: the requested one (or `default_size`),
 // never more than the pixel count, since each slot owns whole pixels. `note`
 // says why when it differs from the request.
 uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note);
 
 // `pool`, or fewer paths where they would take more than half the memory that
-// `used_bytes` (scene and image) leave, or a larger queue buffer than one
-// allocation may be; 0 when not even one path fits.
+// `used_bytes` (scene and image) leave, or a larger buffer of shade records
+// (the largest per path) than one allocation may be; 0 when not even one path fits.
 uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes);
 
 class PathIntegrator {

@@ -12,7 +12,7 @@ using float4 = cl_float4;
 using uint = cl_uint;
 } // namespace
 
-PathPool::PathPool(const cl::Context& context, uint32_t pool_size) : size_(pool_size) {
+PathPool::PathPool(const cl::Context& context, uint32_t pool_size, bool shade_records) : size_(pool_size) {
 #define WF_ALLOCATE_FIELD(type, name, what)                                                      \
     field_bytes_.push_back(sizeof(type));                                                       \
     fields_.emplace_back(context, CL_MEM_READ_WRITE, sizeof(type) * static_cast<size_t>(pool_size));
@@ -21,6 +21,9 @@ PathPool::PathPool(const cl::Context& context, uint32_t pool_size) : size_(pool_
     queues = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_QUEUE_COUNT * static_cast<size_t>(pool_size));
     counters = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_COUNTER_COUNT);
     pixel_list = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(cl_uint));
+    if (shade_records)
+        this->shade_records =
+            cl::Buffer(context, CL_MEM_READ_WRITE, shade_record_bytes_per_path() * static_cast<size_t>(pool_size));
 }
 
 void PathPool::set_pixel_list(const cl::CommandQueue& queue, const std::vector<uint32_t>& pixels) {
@@ -38,7 +41,13 @@ size_t PathPool::state_bytes_per_path() {
     return bytes;
 }
 
-size_t PathPool::bytes_per_path() { return state_bytes_per_path() + sizeof(cl_uint) * WF_QUEUE_COUNT; }
+size_t PathPool::bytes_per_path() {
+    return state_bytes_per_path() + shade_record_bytes_per_path() + sizeof(cl_uint) * WF_QUEUE_COUNT;
+}
+
+size_t PathPool::bytes() const {
+    return (bytes_per_path() - (shade_records() ? 0 : shade_record_bytes_per_path())) * size_;
+}
 
 void PathPool::clear(const cl::CommandQueue& queue) const {
     for (size_t f = 0; f < fields_.size(); ++f)

@@ -1,6 +1,8 @@
 // path_pool.h — the device memory of the wavefront: one buffer per path-state
-// field (include/wavefront/path_state.h), the queues, their counters, and the
-// list of pixels the slots trace when they are not a run of the image.
+// field (include/wavefront/path_state.h), the queues, their counters, the
+// list of pixels the slots trace when they are not a run of the image, and
+// where the global-queue schedules run shade as two kernels, the records one
+// leaves the other (include/wavefront/shade_record.h).
 #pragma once
 
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include <CL/opencl.hpp>
 
 #include "wavefront/path_state.h"
+#include "wavefront/shade_record.h"
 
 namespace wf {
 
@@ -21,7 +24,8 @@ enum class PathField {
 
 class PathPool {
 public:
-    PathPool(const cl::Context& context, uint32_t pool_size);
+    // `shade_records`: allocate them (the wavefront's global-queue schedules).
+    PathPool(const cl::Context& context, uint32_t pool_size, bool shade_records = false);
 
     // Zeroes every path-state field, before a render starts.
     void clear(const cl::CommandQueue& queue) const;
@@ -38,14 +42,18 @@ public:
     const std::vector<cl::Buffer>& fields() const { return fields_; } // in WF_PATH_STATE order
 
     uint32_t size() const { return size_; }
-    // Device memory per path slot: its state (state_bytes_per_path) plus one entry in every queue.
+    // Device memory per path slot at most: its state (state_bytes_per_path),
+    // its shade record (shade_record_bytes_per_path) and one entry in every queue.
     static size_t bytes_per_path();
     static size_t state_bytes_per_path();
-    size_t bytes() const { return bytes_per_path() * size_; }
+    static size_t shade_record_bytes_per_path() { return sizeof(cl_float4) * WF_SHADE_RECORD_ROWS; }
+    // This pool's, with its shade records or without.
+    size_t bytes() const;
 
     cl::Buffer queues;   // WF_QUEUE_COUNT regions of size() slot indices
     cl::Buffer counters; // WF_COUNTER_COUNT uints: queue lengths, then statistics
     cl::Buffer pixel_list; // set_pixel_list's; one unused entry until then
+    cl::Buffer shade_records; // WF_SHADE_RECORD_ROWS rows of size() float4s, where asked for; else none
 
 private:
     uint32_t size_;

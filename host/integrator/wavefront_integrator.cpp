@@ -15,6 +15,7 @@ WavefrontIntegrator::WavefrontIntegrator(const OpenClDevice& device, const cl::P
     : PathIntegrator(device, scene, camera, settings) {
     for (int s = 0; s < kStageKernels; ++s) kernels_[s] = cl::Kernel(program, stats_.stages[s].name);
     if (settings.schedule == Schedule::Group) group_ = cl::Kernel(program, stats_.stages[STAGE_GROUP].name);
+    if (pool_.shade_records()) surface_ = cl::Kernel(program, "surface");
     if (settings.sort_materials) {
         count_materials_ = cl::Kernel(program, "count_materials");
         scan_materials_ = cl::Kernel(program, "scan_materials");
@@ -29,6 +30,8 @@ void WavefrontIntegrator::extend(uint32_t items) {
     for (int s = 0; s < kStageKernels; ++s) {
         if (kStageQueue[s] != WF_QUEUE_EXTEND) continue;
         if (s == STAGE_SHADE && settings_.sort_materials) sort_by_material(items);
+        // Shade's first kernel, timed as the stage's (include/wavefront/shade_record.h).
+        if (s == STAGE_SHADE && surface_()) PathIntegrator::launch(STAGE_SHADE, surface_, items);
         launch(static_cast<Stage>(s), items);
     }
 }
@@ -42,12 +45,16 @@ void WavefrontIntegrator::sort_by_material(uint32_t items) {
     device_.queue.enqueueFillBuffer(key_counts_, 0u, 0, sizeof(cl_uint) * WF_SORT_KEYS);
 }
 
-// Every kernel's arguments: the shared ones (stage_args.h), then the sort's
-// own. The render constants change from round to round.
+// Every kernel's arguments: the shared ones (stage_args.h), then shade's
+// records and the sort's own. The render constants change from round to round.
 void WavefrontIntegrator::set_stage_args() {
     const StageArgs shared = stage_args();
     for (cl::Kernel& k : kernels_) wf::set_stage_args(k, shared);
     if (settings_.schedule == Schedule::Group) wf::set_stage_args(group_, shared);
+    if (surface_()) {
+        set_kernel_args(surface_, wf::set_stage_args(surface_, shared), pool_.shade_records);
+        set_kernel_args(kernels_[STAGE_SHADE], wf::set_stage_args(kernels_[STAGE_SHADE], shared), pool_.shade_records);
+    }
     if (settings_.sort_materials) {
         set_kernel_args(count_materials_, wf::set_stage_args(count_materials_, shared), key_counts_);
         set_kernel_args(scan_materials_, 0, key_counts_);

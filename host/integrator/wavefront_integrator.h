@@ -3,7 +3,8 @@
 //
 //   generate → intersect → shade → intersect_shadow → roulette → accumulate
 //
-// Each stage reads one queue of path slots and appends to others; a slot is
+// Each stage reads one queue of path slots and appends to others (shade in
+// two kernels, surface then shade, where shade_in_two_kernels); a slot is
 // in one queue at a time, so any order of launches is correct and the
 // schedule (--schedule) changes the speed, never the image:
 //   refill  — one iteration launches every stage once, in pipeline order,
@@ -54,7 +55,8 @@ private:
     std::array<cl::Kernel, kStageKernels> kernels_; // one per stage of the stage list, by name
     // --sort-materials only: its kernels, the key counts and the sorted queue.
     cl::Kernel count_materials_, scan_materials_, scatter_materials_;
-    cl::Kernel group_; // --schedule group only
+    cl::Kernel group_;   // --schedule group only
+    cl::Kernel surface_; // shade's first kernel, where shade_in_two_kernels (path_integrator.h)
     cl::Buffer key_counts_, sorted_;
 };
 

@@ -107,6 +107,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
     if (settings.trace_width > 1) p.options += " -DWF_TRACE_WIDTH=" + std::to_string(settings.trace_width);
+    if (shade_in_two_kernels(settings.integrator, schedule_for(device, settings), gpu)) p.options += " -DWF_SHADE_IN_TWO=1";
     return p;
 }
 
@@ -137,6 +138,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     : device_(device) {
     RenderSettings settings = requested;
     settings.schedule = schedule_for(device.info, settings);
+    settings.kernels = gpu_kernels(device.info, settings) ? KernelKind::Gpu : KernelKind::Cpu;
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
     const uint32_t default_pool =
@@ -162,10 +164,14 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
                                  mib(device.info.global_memory) + ")";
         }
     }
+    // A path's largest share of one buffer: its shade record where there is one, else its queue entries.
+    const size_t per_path_largest =
+        shade_in_two_kernels(settings.integrator, settings.schedule, settings.kernels == KernelKind::Gpu)
+            ? PathPool::shade_record_bytes_per_path()
+            : WF_QUEUE_COUNT * sizeof(cl_uint);
     check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
                         film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
-                                  pixels * sizeof(cl_float4),
-                                  size_t{settings.pool_size} * WF_QUEUE_COUNT * sizeof(cl_uint)}));
+                                  pixels * sizeof(cl_float4), size_t{settings.pool_size} * per_path_largest}));
 
     const std::string probe_warning = check_shared_layouts(device);
     program_ = build_render_program(device, scene, settings, &summary_.features);

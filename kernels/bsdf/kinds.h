@@ -58,27 +58,58 @@ WF_INLINE LayeredParams_x1 layered_params_x1(const BsdfParams* b) {
 #undef WF_COPY_REAL
 #undef WF_COPY_RGB
 
+/* The core in two halves at width 1, for a kernel that keeps the first's
+ * answer in memory while the second runs (stages/shade_record.h): what both
+ * share at wo, the BSDF at the light sample's direction, then a sample.
+ * layered_core_x1 is both, in this order. */
+typedef struct LayeredAtQuery_x1 {
+    LayeredParams_x1 p;
+    lvec1 wo;
+    LayeredAtWo_x1 at;
+} LayeredAtQuery_x1;
+
+WF_INLINE LayeredAtQuery_x1 layered_at_query_x1(const BsdfQuery* q) {
+    LayeredAtQuery_x1 s;
+    s.p = layered_params_x1(&q->params);
+    s.wo = vec_from_float3(q->wo);
+    s.at = layered_at_wo_x1(&s.p, s.wo);
+    return s;
+}
+
+/* f at wi_light, without the cosine, and its pdf; the query has a light sample. */
+WF_INLINE float3 layered_light_x1(const BsdfQuery* q, const LayeredAtQuery_x1* s, float* pdf) {
+    return rgb_to_float3(
+        layered_eval_pdf_x1(&s->p, &s->at, s->wo, vec_from_float3(q->wi_light), q->params.hemisphere, pdf));
+}
+
+WF_INLINE BsdfSample layered_sample_core_x1(const BsdfQuery* q, const LayeredAtQuery_x1* s) {
+    BsdfSample sample;
+    lvec1 wi;
+    int delta;
+    sample.f = rgb_to_float3(
+        layered_sample_x1(&s->p, &s->at, s->wo, vec_from_float3(q->u), q->params.hemisphere, &wi, &sample.pdf, &delta));
+    sample.wi = vec_to_float3(wi);
+    sample.delta = delta;
+    return sample;
+}
+
 WF_INLINE BsdfAnswer layered_core_x1(const BsdfQuery* q) {
-    const LayeredParams_x1 p = layered_params_x1(&q->params);
-    const lvec1 wo = vec_from_float3(q->wo);
-    const LayeredAtWo_x1 at = layered_at_wo_x1(&p, wo);
+    const LayeredAtQuery_x1 s = layered_at_query_x1(q);
     BsdfAnswer a;
     a.f_light = (float3)(0.0f);
     a.pdf_light = 0.0f;
-    if (q->light)
-        a.f_light = rgb_to_float3(
-            layered_eval_pdf_x1(&p, &at, wo, vec_from_float3(q->wi_light), q->params.hemisphere, &a.pdf_light));
-    lvec1 wi;
-    int delta;
-    a.sample.f = rgb_to_float3(layered_sample_x1(&p, &at, wo, vec_from_float3(q->u), q->params.hemisphere, &wi,
-                                                &a.sample.pdf, &delta));
-    a.sample.wi = vec_to_float3(wi);
-    a.sample.delta = delta;
+    if (q->light) a.f_light = layered_light_x1(q, &s, &a.pdf_light);
+    a.sample = layered_sample_core_x1(q, &s);
     return a;
 }
 #endif
 
-/* The core at width 1: the kind's, every material's (wavefront/bsdf_kinds.h). */
+/* The core at width 1: the kind's, every material's (wavefront/bsdf_kinds.h);
+ * and its halves. */
 WF_GPU_INLINE BsdfAnswer bsdf_core(const BsdfQuery* q) { return layered_core_x1(q); }
+typedef LayeredAtQuery_x1 BsdfAtQuery;
+WF_INLINE BsdfAtQuery bsdf_at_query(const BsdfQuery* q) { return layered_at_query_x1(q); }
+WF_INLINE float3 bsdf_light(const BsdfQuery* q, const BsdfAtQuery* s, float* pdf) { return layered_light_x1(q, s, pdf); }
+WF_INLINE BsdfSample bsdf_sample_core(const BsdfQuery* q, const BsdfAtQuery* s) { return layered_sample_core_x1(q, s); }
 
 #endif

@@ -118,14 +118,18 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
 }
 
 // --kernels gpu builds what a GPU gets (render_program_source): static
-// functions, lanes of one path, and the glass table read from the scene, not
-// from the constant bank. The same floats in the same order: the same bits.
+// functions, lanes of one path, the glass table read from the scene, not
+// from the constant bank, and on a GPU's default schedule (refill) shade in
+// two kernels (stages/shade_record.h). The same floats in the same order:
+// the same bits.
 void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera& camera, const std::string& what,
-                                          Integrator integrator, uint32_t lane_width = 0) {
+                                          Integrator integrator, uint32_t lane_width = 0,
+                                          Schedule schedule = Schedule::Auto) {
     RenderSettings settings;
     settings.spp = 4;
     settings.seed = 5;
     settings.integrator = integrator;
+    settings.schedule = schedule;
     if (lane_width != 0) { // a GPU's program with the group schedule's lanes, which read the glass table too
         settings.schedule = Schedule::Group;
         settings.lane_width = lane_width;
@@ -134,7 +138,8 @@ void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera&
     const RenderOutput cpu = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
     settings.kernels = KernelKind::Gpu;
     const RenderOutput gpu = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
-    EXPECT_TRUE(same_bits(cpu.film.mean, gpu.film.mean)) << what << ", " << integrator_name(integrator);
+    EXPECT_TRUE(same_bits(cpu.film.mean, gpu.film.mean))
+        << what << ", " << integrator_name(integrator) << ", " << schedule_name(settings.schedule);
     EXPECT_EQ(cpu.summary.stats.shadow_rays, gpu.summary.stats.shadow_rays) << what;
 }
 
@@ -160,6 +165,11 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
         expect_gpu_kernels_equal_cpu_kernels(lambertian_cornell, *cornell.camera, "Lambertian Cornell box",
                                              integrator);
     }
+    // Shade in two kernels, as a GPU's default schedule runs it.
+    expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball", Integrator::Wavefront, 0,
+                                         Schedule::Refill);
+    expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", Integrator::Wavefront, 0,
+                                         Schedule::Refill);
     expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball, 8 lanes", Integrator::Wavefront, 8);
 }
 

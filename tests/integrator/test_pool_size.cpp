@@ -28,8 +28,8 @@ TEST(PoolSize, TheDefaultShrinksToWhatTheDeviceHolds) {
     // 100 MiB left beside the scene: half of it holds this many paths.
     const size_t left = 100u << 20;
     EXPECT_EQ(pool_that_fits(1u << 20, gib + left, gib, gib), (left / 2) / per_path);
-    // The queue buffer is the largest per-path allocation: 5 indices a path.
-    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, 5 * 4 * 1000, 0), 1000u);
+    // The shade records are the largest per-path allocation.
+    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, PathPool::shade_record_bytes_per_path() * 1000, 0), 1000u);
     EXPECT_EQ(pool_that_fits(1u << 20, gib, gib, 2 * gib), 0u); // nothing left
 }
 
