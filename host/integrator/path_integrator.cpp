@@ -95,7 +95,7 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pi
 
 uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes) {
     const size_t room = device_memory > used_bytes ? (device_memory - used_bytes) / 2 : 0;
-    static_assert(WF_SHADE_RECORD_ROWS * sizeof(cl_float4) > WF_QUEUE_COUNT * sizeof(cl_uint),
+    static_assert(PathPool::shade_record_bytes_per_path() > PathPool::queue_bytes_per_path(),
                   "the shade records are the largest buffer a path has a share of");
     const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / PathPool::shade_record_bytes_per_path());
     return static_cast<uint32_t>(std::min<size_t>(pool, fits));

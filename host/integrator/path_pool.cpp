@@ -18,7 +18,7 @@ PathPool::PathPool(const cl::Context& context, uint32_t pool_size, bool shade_re
     fields_.emplace_back(context, CL_MEM_READ_WRITE, sizeof(type) * static_cast<size_t>(pool_size));
     WF_PATH_STATE(WF_ALLOCATE_FIELD)
 #undef WF_ALLOCATE_FIELD
-    queues = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_QUEUE_COUNT * static_cast<size_t>(pool_size));
+    queues = cl::Buffer(context, CL_MEM_READ_WRITE, queue_bytes_per_path() * static_cast<size_t>(pool_size));
     counters = cl::Buffer(context, CL_MEM_READ_WRITE, sizeof(cl_uint) * WF_COUNTER_COUNT);
     pixel_list = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(cl_uint));
     if (shade_records)
@@ -42,7 +42,7 @@ size_t PathPool::state_bytes_per_path() {
 }
 
 size_t PathPool::bytes_per_path() {
-    return state_bytes_per_path() + shade_record_bytes_per_path() + sizeof(cl_uint) * WF_QUEUE_COUNT;
+    return state_bytes_per_path() + shade_record_bytes_per_path() + queue_bytes_per_path();
 }
 
 size_t PathPool::bytes() const {

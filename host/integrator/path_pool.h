@@ -12,6 +12,7 @@
 
 #include "wavefront/path_state.h"
 #include "wavefront/shade_record.h"
+#include "wavefront/stage_graph.h"
 
 namespace wf {
 
@@ -46,7 +47,8 @@ public:
     // its shade record (shade_record_bytes_per_path) and one entry in every queue.
     static size_t bytes_per_path();
     static size_t state_bytes_per_path();
-    static size_t shade_record_bytes_per_path() { return sizeof(cl_float4) * WF_SHADE_RECORD_ROWS; }
+    static constexpr size_t shade_record_bytes_per_path() { return sizeof(cl_float4) * WF_SHADE_RECORD_ROWS; }
+    static constexpr size_t queue_bytes_per_path() { return sizeof(cl_uint) * WF_QUEUE_COUNT; }
     // This pool's, with its shade records or without.
     size_t bytes() const;
 

@@ -168,7 +168,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     const size_t per_path_largest =
         shade_in_two_kernels(settings.integrator, settings.schedule, settings.kernels == KernelKind::Gpu)
             ? PathPool::shade_record_bytes_per_path()
-            : WF_QUEUE_COUNT * sizeof(cl_uint);
+            : PathPool::queue_bytes_per_path();
     check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
                         film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
                                   pixels * sizeof(cl_float4), size_t{settings.pool_size} * per_path_largest}));
