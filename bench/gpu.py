@@ -15,8 +15,9 @@ In order of what matters most, each step skipped once the budget is spent:
   3. throughput: 1024-wide renders for --time seconds after a 1-spp warm-up
      that compiles the program (the first compile of each is timed too):
      the wavefront (its GPU schedule) and the megakernel on six scenes, then
-     the Cornell box under every schedule, pool size, local size and queue
-     push (--only knobs: the last alone, beside the default);
+     the Cornell box under every schedule, pool size, local size, queue
+     push and shade in one kernel or two (--only knobs: the last alone,
+     beside the default);
      (--only traversal: the ray bench with a GPU's kernels and with a CPU's);
   4. wavefront_ray_bench --device gpu on three scenes (our kernels on the GPU,
      Embree on every host core, the same rays).
@@ -63,6 +64,7 @@ DRIVER_DIRS = ["/usr/local/nvidia/lib64", "/usr/lib/x86_64-linux-gnu", "/usr/lib
 KNOBS = [("local size 32", ["--local-size", "32"]), ("local size 128", ["--local-size", "128"]),
          ("local size 256", ["--local-size", "256"]), ("queue push atomic", ["--queue-push", "atomic"]),
          ("queue push scan", ["--queue-push", "scan"]), ("group schedule", ["--schedule", "group"]),
+         ("one shade kernel", ["--shade-kernels", "1"]),
          ("megakernel, local size 128", ["--integrator", "megakernel", "--local-size", "128"])]
 POOLS = [262144, 1048576, 4194304]  # at most the pixels: these rows render 2048 wide
 
@@ -345,7 +347,8 @@ def main():
     p.add_argument("--rays", type=int, default=4000000)
     p.add_argument("--device", default="gpu", help="the OpenCL device, as `wavefront render --device` (default gpu)")
     p.add_argument("--only", choices=["all", "knobs", "traversal"], default="all",
-                   help="knobs: the Cornell box's local sizes, queue pushes and group schedule alone; traversal: "
+                   help="knobs: the Cornell box's local sizes, queue pushes, group schedule and one shade kernel "
+                        "alone; traversal: "
                         "the ray bench with a GPU's kernels and a CPU's")
     p.add_argument("--references", help="CPU renders of the check scenes, from --make-references")
     p.add_argument("--make-references", metavar="DIR", help="render them on the CPU device into DIR, and stop")

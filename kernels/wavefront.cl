@@ -18,7 +18,7 @@
 #include "stages/shade.h"
 #include "stages/shade_lanes.h"
 #if WF_SHADE_IN_TWO
-#include "stages/shade_record.h"
+#include "stages/shade_two_kernels.h"
 #endif
 #include "stages/generate_lanes.h"
 #include "stages/intersect_shadow.h"
@@ -67,9 +67,10 @@ __kernel void scatter_materials(WF_STAGE_PARAMS, __global uint* key_starts, __gl
 
 /* Each kernel pushes its paths to the queues its stage function returns, every
  * work-item to each of the stage's next queues in turn (the pushes hold
- * barriers). A GPU's program on the global-queue schedules (WF_SHADE_IN_TWO)
- * runs shade as two kernels over the extension queue (stages/shade_record.h):
- * surface leaves each path's record, shade takes it on. */
+ * barriers). Shade may run as two kernels over the extension queue
+ * (WF_SHADE_IN_TWO, by default a GPU's program on the global-queue
+ * schedules; stages/shade_two_kernels.h): surface leaves each path's record,
+ * shade takes it on. */
 #if WF_SHADE_IN_TWO
 __kernel void surface(WF_STAGE_PARAMS, __global float4* shade_records) {
     WF_BIND_STAGE_ARGS;

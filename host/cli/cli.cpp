@@ -252,6 +252,12 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                                    "triangles outgrow the device's cache (1 elsewhere); the same image",
                                    s.trace_width))
         ->check(CLI::IsMember({0u, 1u, 2u}));
+    render.add_option("--shade-kernels", s.shade_kernels,
+                      with_default("Kernels the wavefront's shade stage runs as on refill, passes and fullest: 1, "
+                                   "2 (surface, then the BSDF: fewer registers each), or 0 for 2 with a GPU's "
+                                   "kernels (1 elsewhere); the same image",
+                                   s.shade_kernels))
+        ->check(CLI::IsMember({0u, 1u, 2u}));
     f.kernels = kernel_kind_name(s.kernels);
     render.add_option("--kernels", f.kernels,
                       with_default("Build the kernels for a cpu or a gpu, whatever the device, to test one kind's "

@@ -49,6 +49,7 @@ void RenderStats::add(const RenderStats& o, bool with_counter_reads) {
     iterations += o.iterations;
     pool_size += o.pool_size;
     pool_bytes += o.pool_bytes;
+    shade_record_bytes = std::max(shade_record_bytes, o.shade_record_bytes);
     for (int s = 0; s < STAGE_COUNT; ++s) {
         stages[s].seconds += o.stages[s].seconds;
         stages[s].launches += o.stages[s].launches;
@@ -80,8 +81,12 @@ Schedule default_schedule(const std::string& device_type, bool sort_materials) {
     return device_type == "cpu" && !sort_materials ? Schedule::Group : Schedule::Refill;
 }
 
-bool shade_in_two_kernels(Integrator integrator, Schedule schedule, bool gpu_kernels) {
-    return gpu_kernels && integrator == Integrator::Wavefront && schedule != Schedule::Group;
+bool shade_in_two_kernels(const RenderSettings& settings) {
+    if (settings.integrator != Integrator::Wavefront) return false;
+    if (settings.schedule == Schedule::Auto || settings.kernels == KernelKind::Auto)
+        throw std::logic_error("shade's kernels follow from a resolved schedule and kind of kernels");
+    if (settings.schedule == Schedule::Group) return false;
+    return settings.shade_kernels == 0 ? settings.kernels == KernelKind::Gpu : settings.shade_kernels == 2;
 }
 
 uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note) {
@@ -93,19 +98,18 @@ uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pi
     return size;
 }
 
-uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes) {
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes,
+                        bool shade_records) {
     const size_t room = device_memory > used_bytes ? (device_memory - used_bytes) / 2 : 0;
-    static_assert(PathPool::shade_record_bytes_per_path() > PathPool::queue_bytes_per_path(),
-                  "the shade records are the largest buffer a path has a share of");
-    const size_t fits = std::min(room / PathPool::bytes_per_path(), max_allocation / PathPool::shade_record_bytes_per_path());
+    const size_t fits = std::min(room / PathPool::bytes_per_path(shade_records),
+                                 max_allocation / PathPool::largest_bytes_per_path(shade_records));
     return static_cast<uint32_t>(std::min<size_t>(pool, fits));
 }
 
 PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& scene, const Camera& camera,
                                const RenderSettings& settings)
     : device_(device), settings_(settings), scene_(scene), camera_(camera),
-      pool_(device.context, settings.pool_size,
-            shade_in_two_kernels(settings.integrator, settings.schedule, settings.kernels == KernelKind::Gpu)),
+      pool_(device.context, settings.pool_size, shade_in_two_kernels(settings)),
       film_(device.context, device.queue, camera.width, camera.height, settings.bounce_layers, settings.aovs) {
     params_.pixel_count = camera.width * camera.height;
     params_.first_pixel = 0;
@@ -133,6 +137,7 @@ PathIntegrator::PathIntegrator(const OpenClDevice& device, const DeviceScene& sc
     stats_.schedule = settings.schedule;
     stats_.pool_size = pool_.size();
     stats_.pool_bytes = pool_.bytes();
+    stats_.shade_record_bytes = pool_.shade_records() ? PathPool::shade_record_bytes_per_path() : 0;
     for (int s = 0; s < STAGE_COUNT; ++s) stats_.stages[s].name = kStageNames[s];
     pool_.clear(device.queue); // every slot has started nothing
 }

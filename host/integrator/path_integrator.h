@@ -96,6 +96,7 @@ struct RenderStats {
     uint64_t iterations = 0; // reads of the counters: wavefront iterations or steps, megakernel launches
     uint32_t pool_size = 0;
     size_t pool_bytes = 0;
+    size_t shade_record_bytes = 0; // a path, where the render keeps shade records (shade_in_two_kernels)
     std::array<StageTime, STAGE_COUNT> stages{};
     // Finished paths by bounces: bucket 0 holds 0, bucket b ≥ 1 holds [2^(b−1), 2^b), the last open-ended.
     std::array<uint64_t, WF_PATH_LENGTH_BUCKETS> path_lengths{};
@@ -125,12 +126,13 @@ uint32_t default_pool_size(const std::string& device_type, unsigned compute_unit
 Schedule default_schedule(const std::string& device_type, bool sort_materials);
 
 // Whether a render runs shade as two kernels, surface then shade, with a
-// record a path between them (include/wavefront/shade_record.h): a GPU's
-// program on the global-queue schedules, where one kernel's registers cost
-// occupancy. A CPU's would only pay for the record's memory (refill 15-20%
-// slower on the Cornell box), and the megakernel and the group schedule keep
-// a path in one kernel.
-bool shade_in_two_kernels(Integrator integrator, Schedule schedule, bool gpu_kernels);
+// record a path between them (include/wavefront/shade_record.h): as
+// --shade-kernels says, by default a GPU's program, where one kernel's
+// registers cost occupancy (bench/results/gpu-isa.md); a CPU's would only pay
+// for the record's memory. Only the global-queue schedules: the megakernel
+// and the group schedule keep a path in one kernel. `settings` resolved: a
+// schedule and a kind of kernels (render/device_renderer.h), else logic_error.
+bool shade_in_two_kernels(const RenderSettings& settings);
 
 // The pool size used for a render: the requested one (or `default_size`),
 // never more than the pixel count, since each slot owns whole pixels. `note`
@@ -138,9 +140,10 @@ bool shade_in_two_kernels(Integrator integrator, Schedule schedule, bool gpu_ker
 uint32_t choose_pool_size(uint32_t requested, uint32_t default_size, uint32_t pixel_count, std::string* note);
 
 // `pool`, or fewer paths where they would take more than half the memory that
-// `used_bytes` (scene and image) leave, or a larger buffer of shade records
-// (the largest per path) than one allocation may be; 0 when not even one path fits.
-uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes);
+// `used_bytes` (scene and image) leave, or a larger buffer than one allocation
+// may be (PathPool::largest_bytes_per_path); 0 when not even one path fits.
+uint32_t pool_that_fits(uint32_t pool, size_t device_memory, size_t max_allocation, size_t used_bytes,
+                        bool shade_records);
 
 class PathIntegrator {
 public:

@@ -41,12 +41,8 @@ size_t PathPool::state_bytes_per_path() {
     return bytes;
 }
 
-size_t PathPool::bytes_per_path() {
-    return state_bytes_per_path() + shade_record_bytes_per_path() + queue_bytes_per_path();
-}
-
-size_t PathPool::bytes() const {
-    return (bytes_per_path() - (shade_records() ? 0 : shade_record_bytes_per_path())) * size_;
+size_t PathPool::bytes_per_path(bool shade_records) {
+    return state_bytes_per_path() + (shade_records ? shade_record_bytes_per_path() : 0) + queue_bytes_per_path();
 }
 
 void PathPool::clear(const cl::CommandQueue& queue) const {

@@ -43,14 +43,17 @@ public:
     const std::vector<cl::Buffer>& fields() const { return fields_; } // in WF_PATH_STATE order
 
     uint32_t size() const { return size_; }
-    // Device memory per path slot at most: its state (state_bytes_per_path),
-    // its shade record (shade_record_bytes_per_path) and one entry in every queue.
-    static size_t bytes_per_path();
+    // Device memory per path slot: its state (state_bytes_per_path), its
+    // shade record where there are records, and one entry in every queue.
+    static size_t bytes_per_path(bool shade_records);
     static size_t state_bytes_per_path();
     static constexpr size_t shade_record_bytes_per_path() { return sizeof(cl_float4) * WF_SHADE_RECORD_ROWS; }
     static constexpr size_t queue_bytes_per_path() { return sizeof(cl_uint) * WF_QUEUE_COUNT; }
-    // This pool's, with its shade records or without.
-    size_t bytes() const;
+    // The largest share of one buffer a path slot has: its record where there are records, else its queue entries.
+    static constexpr size_t largest_bytes_per_path(bool shade_records) {
+        return shade_records ? shade_record_bytes_per_path() : queue_bytes_per_path();
+    }
+    size_t bytes() const { return bytes_per_path(shade_records() != nullptr) * size_; }
 
     cl::Buffer queues;   // WF_QUEUE_COUNT regions of size() slot indices
     cl::Buffer counters; // WF_COUNTER_COUNT uints: queue lengths, then statistics

@@ -122,6 +122,10 @@ struct RenderSettings {
     // (kernels/geometry/trace_width.h): 1 or 2; 0: 2 on a CPU where the
     // scene's triangles outgrow the device's cache, else 1. The same bytes.
     uint32_t trace_width = 0;
+    // Kernels of the wavefront's shade stage on a global-queue schedule
+    // (include/wavefront/shade_record.h): 1 or 2; 0: 2 for a GPU's kernels,
+    // else 1 (shade_in_two_kernels, path_integrator.h). The same bytes.
+    uint32_t shade_kernels = 0;
     KernelKind kernels = KernelKind::Auto; // Auto: the device's kind
     // While it holds non-zero, no sample starts: the paths in flight end and
     // the round returns early, each slot's pixels then one sample apart at most.

@@ -49,11 +49,13 @@ void WavefrontIntegrator::sort_by_material(uint32_t items) {
 // records and the sort's own. The render constants change from round to round.
 void WavefrontIntegrator::set_stage_args() {
     const StageArgs shared = stage_args();
-    for (cl::Kernel& k : kernels_) wf::set_stage_args(k, shared);
+    cl_uint own = 0; // a kernel's first argument of its own
+    for (cl::Kernel& k : kernels_) own = wf::set_stage_args(k, shared);
     if (settings_.schedule == Schedule::Group) wf::set_stage_args(group_, shared);
     if (surface_()) {
-        set_kernel_args(surface_, wf::set_stage_args(surface_, shared), pool_.shade_records);
-        set_kernel_args(kernels_[STAGE_SHADE], wf::set_stage_args(kernels_[STAGE_SHADE], shared), pool_.shade_records);
+        wf::set_stage_args(surface_, shared);
+        set_kernel_args(surface_, own, pool_.shade_records);
+        set_kernel_args(kernels_[STAGE_SHADE], own, pool_.shade_records);
     }
     if (settings_.sort_materials) {
         set_kernel_args(count_materials_, wf::set_stage_args(count_materials_, shared), key_counts_);

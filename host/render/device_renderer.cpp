@@ -61,6 +61,14 @@ uint32_t trace_width(const DeviceInfo& device, const Scene& scene, const RenderS
     return !gpu_kernels(device, settings) && device.global_cache > 0 && blocks > device.global_cache ? 2u : 1u;
 }
 
+// The settings with the schedule and the kind of kernels the device takes where they say Auto.
+RenderSettings resolved_for(const DeviceInfo& device, const RenderSettings& settings) {
+    RenderSettings resolved = settings;
+    resolved.schedule = schedule_for(device, settings);
+    resolved.kernels = gpu_kernels(device, settings) ? KernelKind::Gpu : KernelKind::Cpu;
+    return resolved;
+}
+
 } // namespace
 
 bool gpu_kernels(const DeviceInfo& device, const RenderSettings& settings) {
@@ -107,7 +115,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
     if (settings.trace_width > 1) p.options += " -DWF_TRACE_WIDTH=" + std::to_string(settings.trace_width);
-    if (shade_in_two_kernels(settings.integrator, schedule_for(device, settings), gpu)) p.options += " -DWF_SHADE_IN_TWO=1";
+    if (shade_in_two_kernels(resolved_for(device, settings))) p.options += " -DWF_SHADE_IN_TWO=1";
     return p;
 }
 
@@ -137,8 +145,8 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
                                const SceneCamera& camera, ImageSize size, const RenderSettings& requested)
     : device_(device) {
     RenderSettings settings = requested;
-    settings.schedule = schedule_for(device.info, settings);
-    settings.kernels = gpu_kernels(device.info, settings) ? KernelKind::Gpu : KernelKind::Cpu;
+    settings = resolved_for(device.info, settings);
+    const bool shade_records = shade_in_two_kernels(settings);
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
     const uint32_t default_pool =
@@ -156,7 +164,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
         // leave, and to the largest buffer the device allocates: a small
         // device renders with fewer paths in flight rather than failing.
         const uint32_t fits = pool_that_fits(settings.pool_size, device.info.global_memory,
-                                             device.info.max_allocation, data.bytes() + film_bytes);
+                                             device.info.max_allocation, data.bytes() + film_bytes, shade_records);
         if (fits > 0 && fits < settings.pool_size) {
             settings.pool_size = fits;
             summary_.pool_note = "pool of " + std::to_string(fits) + " paths, what " + device.info.name +
@@ -164,14 +172,10 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
                                  mib(device.info.global_memory) + ")";
         }
     }
-    // A path's largest share of one buffer: its shade record where there is one, else its queue entries.
-    const size_t per_path_largest =
-        shade_in_two_kernels(settings.integrator, settings.schedule, settings.kernels == KernelKind::Gpu)
-            ? PathPool::shade_record_bytes_per_path()
-            : PathPool::queue_bytes_per_path();
-    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(),
+    check_device_memory(device.info, data.bytes(), size_t{settings.pool_size} * PathPool::bytes_per_path(shade_records),
                         film_bytes, std::max({data.largest_buffer_bytes(), pixels * settings.bounce_layers * sizeof(cl_float4),
-                                  pixels * sizeof(cl_float4), size_t{settings.pool_size} * per_path_largest}));
+                                  pixels * sizeof(cl_float4),
+                                  size_t{settings.pool_size} * PathPool::largest_bytes_per_path(shade_records)}));
 
     const std::string probe_warning = check_shared_layouts(device);
     program_ = build_render_program(device, scene, settings, &summary_.features);

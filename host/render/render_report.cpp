@@ -67,14 +67,10 @@ void print_report(std::ostream& out, const RenderSummary& s) {
     if (shadow_kernel > 0.0)
         out << ", " << per_second(st.shadow_rays, shadow_kernel) * 1e-6 << " M/s in intersect_shadow";
     out << ")\n";
-    // Shade's records (include/wavefront/shade_record.h), where the render kept them.
-    const size_t records = st.pool_size ? st.pool_bytes / st.pool_size - PathPool::state_bytes_per_path() -
-                                              PathPool::queue_bytes_per_path()
-                                        : 0;
     out << "memory     " << std::setprecision(1) << s.device_bytes / 1048576.0 << " MiB on the device; pool "
         << st.pool_size << " paths of " << PathPool::state_bytes_per_path() << " bytes, queues "
         << PathPool::queue_bytes_per_path() << " bytes a path";
-    if (records) out << ", shade records " << records;
+    if (st.shade_record_bytes) out << ", shade records " << st.shade_record_bytes << " bytes a path";
     out << "; BVH and triangles " << per_second(s.traversal_bytes, s.triangles) << " bytes a triangle\n";
     const bool megakernel = st.integrator == Integrator::Megakernel;
     out << "schedule   " << integrator_name(st.integrator);

@@ -1,20 +1,23 @@
 /* shade_record.h — what the wavefront's shade stage carries from its first
- * kernel to its second, a slot at a time: the global-queue schedules run
- * shade as two kernels over the extension queue, `surface` (the arrival and
- * the surface, with the emission it finds) and `shade` (the light sample, the
- * BSDF core and the scatter), so that neither holds the other's registers: on
- * gfx90a the one kernel took 120 VGPRs, the two take at most 96
- * (bench/results/gpu-isa.md). The megakernel and the group schedule, which
- * keep a path in one kernel, shade it in one step.
+ * kernel to its second, a slot at a time, where it runs as two kernels over
+ * the extension queue (--shade-kernels; by default a GPU's program on the
+ * global-queue schedules: shade_in_two_kernels, host/integrator/path_integrator.h):
+ * `surface` (the arrival and the surface, with the emission it finds) and
+ * `shade` (the light sample, the BSDF core and the scatter), so that neither
+ * holds the other's registers. On gfx90a the one kernel took 120 VGPRs on the
+ * Cornell box, the two take 74 and 94 (bench/results/gpu-isa.md). The
+ * megakernel and the group schedule, which keep a path in one kernel, shade
+ * it in one step.
  *
  * One buffer of float4s, WF_SHADE_RECORD_ROWS rows of pool_size, row r of
  * slot s at r * pool_size + s, so that a GPU's neighbouring work-items read
  * neighbouring entries. The rows, declared once here; the kernels pack and
- * unpack them (kernels/stages/shade_record.h), the host allocates them
- * (host/integrator/path_pool.cpp). The last three are the second kernel's
- * own: what its scatter needs of the light sample and of the BSDF there,
- * kept in memory rather than in registers while the BSDF samples. A row of a lobe the program leaves out
- * (wavefront/techniques.h's scene features) is neither written nor read.
+ * unpack them (kernels/stages/shade_two_kernels.h), the host allocates them
+ * (host/integrator/path_pool.cpp). The sheen's row is neither written nor
+ * read by a program without a sheen (kernels/compiled_features.h). The last
+ * three are the second kernel's own: what its scatter needs of the light
+ * sample and of the BSDF there, kept in memory rather than in registers
+ * while the BSDF samples.
  *   X(row, what-it-holds) */
 #ifndef WAVEFRONT_SHADE_RECORD_H
 #define WAVEFRONT_SHADE_RECORD_H

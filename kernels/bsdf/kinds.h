@@ -59,7 +59,7 @@ WF_INLINE LayeredParams_x1 layered_params_x1(const BsdfParams* b) {
 #undef WF_COPY_RGB
 
 /* The core in two halves at width 1, for a kernel that keeps the first's
- * answer in memory while the second runs (stages/shade_record.h): what both
+ * answer in memory while the second runs (stages/shade_two_kernels.h): what both
  * share at wo, the BSDF at the light sample's direction, then a sample.
  * layered_core_x1 is both, in this order. */
 typedef struct LayeredAtQuery_x1 {

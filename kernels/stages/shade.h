@@ -76,7 +76,6 @@ typedef struct ShadeContext {
     float3 position, position_error, geometric_normal; /* geometric_normal on the frame's side */
     ShadingFrame frame;
     float3 throughput;
-    uint depth;
     float4 light_u;    /* the light sample's numbers, where query.light */
     float roulette_u;  /* the number roulette draws for the continuation */
     LightSample light; /* shade_light's, where query.light */
@@ -250,7 +249,6 @@ WF_GPU_INLINE bool shade_surface(PathState* path, const RenderParams* params, ui
     c->position = vec_to_float3(s.position);
     c->position_error = vec_to_float3(s.position_error);
     c->throughput = a->throughput;
-    c->depth = a->depth;
 
     /* Next-event estimation: one point on, or direction to, one light. Delta
      * lights are sampled whatever the technique: nothing else finds them. */

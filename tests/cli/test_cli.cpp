@@ -197,6 +197,7 @@ TEST_F(Cli, BadFlagsAreRejectedByName) {
     expect_rejected("render " + kCornell + " --roulette-cap 1.5", "--roulette-cap: 1.5 is not in (0, 1]");
     expect_rejected("render " + kCornell + " --lane-width 4", "--lane-width: 4");
     expect_rejected("render " + kCornell + " --trace-width 3", "--trace-width: 3");
+    expect_rejected("render " + kCornell + " --shade-kernels 3", "--shade-kernels: 3");
     expect_rejected("render " + kCornell + " --look-at 1,2,3", "--look-at 1,2,3: expected six or nine numbers, not 3");
     expect_rejected("render " + kCornell + " --look-at 1,2,x,4,5,6", "--look-at 1,2,x,4,5,6: expected six or nine");
     expect_rejected("render " + kCornell + " --look-at 1,2,3,1,2,3", "--look-at: the eye is the target");

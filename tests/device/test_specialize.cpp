@@ -7,7 +7,9 @@
 // the CPU device, render the CPU's kernels' bits.
 #include <cstdlib>
 #include <cstring>
+#include <tuple>
 #include <utility>
+#include <vector>
 #include <memory>
 #include <string>
 
@@ -48,6 +50,21 @@ Scene lambertian(Scene scene) {
     for (SceneMaterial& m : scene.materials) m.specular = 0.0f;
     return scene;
 }
+
+// A delta light, which no BSDF sample finds.
+Scene floor_under_a_point_light() {
+    Scene floor;
+    test::add_quad(floor, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2},
+                   test::add_material(floor, glm::vec3(0.5f), glm::vec3(0.0f), false));
+    PunctualLight light{};
+    light.type = WF_PUNCTUAL_POINT;
+    light.position[1] = 1.0f;
+    for (float& i : light.intensity) i = 2.0f;
+    floor.punctual_lights.push_back(light);
+    return floor;
+}
+
+SceneCamera floor_camera() { return test::camera_looking({0, 1, 2}, {0, -0.5f, -1}, {0, 1, 0}, 0.8f); }
 
 TEST(Specialize, FeaturesAreWhatTheSceneUses) {
     const Scene cornell = load_gltf(WF_SOURCE_DIR "/scenes/cornell-box.gltf");
@@ -105,22 +122,13 @@ TEST(Specialize, SpecializedKernelsRenderTheGenericBits) {
     car.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
     expect_specialized_equals_generic(car, *car.camera, "ToyCar under a sky (clear coat, sheen)");
 
-    Scene floor;
-    test::add_quad(floor, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2},
-                   test::add_material(floor, glm::vec3(0.5f), glm::vec3(0.0f), false));
-    PunctualLight light{};
-    light.type = WF_PUNCTUAL_POINT;
-    light.position[1] = 1.0f;
-    for (float& i : light.intensity) i = 2.0f;
-    floor.punctual_lights.push_back(light);
-    expect_specialized_equals_generic(floor, test::camera_looking({0, 1, 2}, {0, -0.5f, -1}, {0, 1, 0}, 0.8f),
-                                      "floor under a point light");
+    expect_specialized_equals_generic(floor_under_a_point_light(), floor_camera(), "floor under a point light");
 }
 
 // --kernels gpu builds what a GPU gets (render_program_source): static
 // functions, lanes of one path, the glass table read from the scene, not
 // from the constant bank, and on a GPU's default schedule (refill) shade in
-// two kernels (stages/shade_record.h). The same floats in the same order:
+// two kernels (stages/shade_two_kernels.h). The same floats in the same order:
 // the same bits.
 void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera& camera, const std::string& what,
                                           Integrator integrator, uint32_t lane_width = 0,
@@ -140,6 +148,7 @@ void expect_gpu_kernels_equal_cpu_kernels(const Scene& scene, const SceneCamera&
     const RenderOutput gpu = render_scene(test::cpu_device(), scene, camera, ImageSize{24, 24}, settings);
     EXPECT_TRUE(same_bits(cpu.film.mean, gpu.film.mean))
         << what << ", " << integrator_name(integrator) << ", " << schedule_name(settings.schedule);
+    EXPECT_TRUE(same_bits(cpu.film.variance_of_mean, gpu.film.variance_of_mean)) << what;
     EXPECT_EQ(cpu.summary.stats.shadow_rays, gpu.summary.stats.shadow_rays) << what;
 }
 
@@ -165,11 +174,20 @@ TEST(Specialize, GpuKernelsRenderTheCpuKernelsBits) {
         expect_gpu_kernels_equal_cpu_kernels(lambertian_cornell, *cornell.camera, "Lambertian Cornell box",
                                              integrator);
     }
-    // Shade in two kernels, as a GPU's default schedule runs it.
-    expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball", Integrator::Wavefront, 0,
-                                         Schedule::Refill);
-    expect_gpu_kernels_equal_cpu_kernels(cornell, *cornell.camera, "Cornell box", Integrator::Wavefront, 0,
-                                         Schedule::Refill);
+    // Shade in two kernels, as a GPU's default schedule runs it (include/wavefront/shade_record.h): under a
+    // sky, an area light, a point light; through glass, off a mirror, and every lobe and texture of ToyCar's.
+    Scene car = load_gltf(WF_SOURCE_DIR "/../shared/scenes-real/ToyCar/ToyCar.gltf");
+    car.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
+    const Scene mirror = load_gltf(WF_SOURCE_DIR "/scenes/cornell-mirror.gltf");
+    const std::vector<std::tuple<const Scene*, SceneCamera, const char*>> refilled = {
+        {&glass, glass_camera, "rough glass ball"},
+        {&cornell, *cornell.camera, "Cornell box"},
+        {&mirror, *mirror.camera, "Cornell box with a mirror"},
+        {&car, *car.camera, "ToyCar under a sky"}};
+    for (const auto& [scene, camera, what] : refilled)
+        expect_gpu_kernels_equal_cpu_kernels(*scene, camera, what, Integrator::Wavefront, 0, Schedule::Refill);
+    expect_gpu_kernels_equal_cpu_kernels(floor_under_a_point_light(), floor_camera(), "floor under a point light",
+                                         Integrator::Wavefront, 0, Schedule::Refill);
     expect_gpu_kernels_equal_cpu_kernels(glass, glass_camera, "rough glass ball, 8 lanes", Integrator::Wavefront, 8);
 }
 

@@ -3,6 +3,7 @@
 // count or not), local sizes, the wavefront's schedules and the megakernel
 // give the same bytes.
 #include <cstring>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,15 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
         EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
     }
     settings.queue_push = QueuePush::Group;
+    settings.shade_kernels = 2; // shade as two kernels with a record between them (include/wavefront/shade_record.h)
+    for (const Schedule schedule : {Schedule::Refill, Schedule::Fullest}) {
+        settings.schedule = schedule;
+        const RenderOutput r = render(settings);
+        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << "two shade kernels, " << schedule_name(schedule);
+        EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
+    }
+    settings.shade_kernels = RenderSettings{}.shade_kernels;
+    settings.schedule = Schedule::Refill;
     settings.integrator = Integrator::Megakernel;
     const RenderOutput mega = render(settings);
     EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));
@@ -168,6 +178,32 @@ TEST(Schedules, TheDefaultIsGroupOnACpuAndRefillElsewhere) {
     EXPECT_EQ(render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings).summary.stats.schedule, Schedule::Group);
     settings.sort_materials = true;
     EXPECT_EQ(render_file(WF_SOURCE_DIR "/scenes/cornell-box.gltf", settings).summary.stats.schedule, Schedule::Refill);
+}
+
+// Shade runs as two kernels (include/wavefront/shade_record.h) where asked,
+// and by default where a GPU's program runs a global-queue schedule; never in
+// the megakernel or the group schedule, which keep a path in one kernel. The
+// rule needs the schedule and the kind of kernels resolved.
+TEST(Schedules, ShadeRunsAsTwoKernelsWhereAGpusProgramRunsAGlobalQueue) {
+    RenderSettings s;
+    EXPECT_THROW(shade_in_two_kernels(s), std::logic_error);
+    s.kernels = KernelKind::Gpu;
+    for (const Schedule schedule : {Schedule::Refill, Schedule::Passes, Schedule::Fullest}) {
+        s.schedule = schedule;
+        EXPECT_TRUE(shade_in_two_kernels(s)) << schedule_name(schedule);
+    }
+    s.shade_kernels = 1;
+    EXPECT_FALSE(shade_in_two_kernels(s));
+    s.shade_kernels = 0;
+    s.kernels = KernelKind::Cpu;
+    EXPECT_FALSE(shade_in_two_kernels(s));
+    s.shade_kernels = 2;
+    EXPECT_TRUE(shade_in_two_kernels(s));
+    s.schedule = Schedule::Group;
+    EXPECT_FALSE(shade_in_two_kernels(s));
+    s.schedule = Schedule::Refill;
+    s.integrator = Integrator::Megakernel;
+    EXPECT_FALSE(shade_in_two_kernels(s));
 }
 
 // The passes schedule starts no sample while a path of the pass is in

@@ -22,15 +22,17 @@ TEST(PoolSize, AtMostThePixelCount) {
 }
 
 TEST(PoolSize, TheDefaultShrinksToWhatTheDeviceHolds) {
-    const size_t per_path = PathPool::bytes_per_path();
+    const size_t per_path = PathPool::bytes_per_path(false);
     const size_t gib = size_t{1} << 30;
-    EXPECT_EQ(pool_that_fits(1u << 18, 8 * gib, 2 * gib, gib), 1u << 18); // room to spare
+    EXPECT_EQ(pool_that_fits(1u << 18, 8 * gib, 2 * gib, gib, false), 1u << 18); // room to spare
     // 100 MiB left beside the scene: half of it holds this many paths.
     const size_t left = 100u << 20;
-    EXPECT_EQ(pool_that_fits(1u << 20, gib + left, gib, gib), (left / 2) / per_path);
-    // The shade records are the largest per-path allocation.
-    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, PathPool::shade_record_bytes_per_path() * 1000, 0), 1000u);
-    EXPECT_EQ(pool_that_fits(1u << 20, gib, gib, 2 * gib), 0u); // nothing left
+    EXPECT_EQ(pool_that_fits(1u << 20, gib + left, gib, gib, false), (left / 2) / per_path);
+    // The largest per-path allocation: the queue buffer's 5 indices a path, or the shade records where there are.
+    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, 5 * 4 * 1000, 0, false), 1000u);
+    EXPECT_EQ(pool_that_fits(1u << 20, 8 * gib, PathPool::shade_record_bytes_per_path() * 1000, 0, true), 1000u);
+    EXPECT_EQ(pool_that_fits(1u << 20, gib + left, gib, gib, true), (left / 2) / PathPool::bytes_per_path(true));
+    EXPECT_EQ(pool_that_fits(1u << 20, gib, gib, 2 * gib, false), 0u); // nothing left
 }
 
 } // namespace

@@ -1,14 +1,18 @@
-/* shade_record.h — shade as two kernels over the extension queue, for the
- * wavefront's global-queue schedules (include/wavefront/shade_record.h says
- * why): shade_surface_path runs shade_path's steps up to the surface (the
+/* shade_two_kernels.h — shade as two kernels over the extension queue, where
+ * the wavefront's global-queue schedules run it so (WF_SHADE_IN_TWO;
+ * include/wavefront/shade_record.h says when and why): shade_surface_path runs shade_path's steps up to the surface (the
  * arrival, the emission it finds, the BSDF's parameters) and leaves the
  * ShadeContext in the slot's record; shade_bsdf_path reads it back and runs
  * the rest (the light sample, its shadow ray, the BSDF core, the scatter).
  * The same steps on the same values, through memory that keeps every bit:
  * the two kernels make shade_path's image (tests/integrator/test_determinism.cpp
- * sets these schedules against the megakernel). Device only. */
-#ifndef WF_STAGE_SHADE_RECORD_H
-#define WF_STAGE_SHADE_RECORD_H
+ * runs them with a CPU's kernels against the megakernel, tests/device/
+ * test_specialize.cpp a GPU's against a CPU's). The flags ride as a bit
+ * pattern, a denormal as a float, which loads and stores move unchanged (only
+ * arithmetic may flush it; none touches it): as a whole number converted,
+ * they took gfx90a's shade two VGPRs more. Device only. */
+#ifndef WF_STAGE_SHADE_TWO_KERNELS_H
+#define WF_STAGE_SHADE_TWO_KERNELS_H
 
 #include "wavefront/shade_record.h"
 #include "stages/shade.h"
@@ -59,7 +63,6 @@ WF_INLINE void load_shade_surface(const PathState* path, uint slot, __global flo
     c->frame.x = vec_to_float3(frame_x);
     c->frame.y = vec_to_float3(frame_y);
     c->throughput = path->throughput[slot].xyz; /* which the surface kernel leaves as it was */
-    c->depth = path_depth(path, slot);
 }
 
 /* The BSDF's query, the numbers and the light's, as the surface kernel left them. */
@@ -126,8 +129,9 @@ WF_INLINE void load_scatter_light(__global float4* rows, uint n, uint slot, Shad
 /* The second kernel's step: returns the queue the path goes to next. The
  * BSDF core runs in its two halves (bsdf/kinds.h), and what the scatter
  * needs is read again after the sample rather than held through it: on
- * gfx90a, 120 VGPRs in one kernel, 106 held here, 94 read again
- * (bench/results/gpu-isa.md). */
+ * gfx90a the Cornell box's one kernel took 120 VGPRs; this one 106 with the
+ * light sample held through the core, 99 with it kept in the record, 94 with
+ * the BSDF's value at it kept too (bench/results/gpu-isa.md). */
 WF_GPU_INLINE uint shade_bsdf_path(PathState* path, const RenderParams* params, uint slot, const Scene* scene,
                                    __global float4* rows) {
     const uint n = params->pool_size;
