@@ -118,15 +118,22 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     EXPECT_TRUE(same_bytes(render(settings).film.mean, independent.film.mean))
         << "group, independent sampler";
     settings.sampler = RenderSettings{}.sampler;
-    settings.schedule = Schedule::Group;
-    settings.trace_width = 2; // two rays a work-item (kernels/geometry/trace_width.h); these scenes' default is 1
-    for (const Schedule schedule : {Schedule::Refill, Schedule::Group}) {
-        settings.schedule = schedule;
-        const RenderOutput r = render(settings);
-        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << "trace width 2, " << schedule_name(schedule);
-        EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
-    }
-    settings.trace_width = RenderSettings{}.trace_width;
+    // `changed` on each of `schedules`: the reference's bytes and shadow rays.
+    auto expect_reference = [&](RenderSettings changed, std::initializer_list<Schedule> schedules,
+                                const std::string& what) {
+        for (const Schedule schedule : schedules) {
+            changed.schedule = schedule;
+            const RenderOutput r = render(changed);
+            EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << what << ", " << schedule_name(schedule);
+            EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << what;
+        }
+    };
+    RenderSettings wide = settings;
+    wide.trace_width = 2; // two rays a work-item (kernels/geometry/trace_width.h); these scenes' default is 1
+    expect_reference(wide, {Schedule::Refill, Schedule::Group}, "trace width 2");
+    RenderSettings split = settings;
+    split.shade_kernels = 2; // shade as two kernels with a record between them (include/wavefront/shade_record.h)
+    expect_reference(split, {Schedule::Refill, Schedule::Fullest}, "two shade kernels");
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
         settings.queue_push = push;
@@ -135,15 +142,6 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
         EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
     }
     settings.queue_push = QueuePush::Group;
-    settings.shade_kernels = 2; // shade as two kernels with a record between them (include/wavefront/shade_record.h)
-    for (const Schedule schedule : {Schedule::Refill, Schedule::Fullest}) {
-        settings.schedule = schedule;
-        const RenderOutput r = render(settings);
-        EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << "two shade kernels, " << schedule_name(schedule);
-        EXPECT_EQ(r.summary.stats.shadow_rays, reference.summary.stats.shadow_rays) << schedule_name(schedule);
-    }
-    settings.shade_kernels = RenderSettings{}.shade_kernels;
-    settings.schedule = Schedule::Refill;
     settings.integrator = Integrator::Megakernel;
     const RenderOutput mega = render(settings);
     EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));
