@@ -144,8 +144,7 @@ SceneBuild::SceneBuild(const Scene& scene) {
 DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, const SceneBuild& build,
                                const SceneCamera& camera, ImageSize size, const RenderSettings& requested)
     : device_(device) {
-    RenderSettings settings = requested;
-    settings = resolved_for(device.info, settings);
+    RenderSettings settings = resolved_for(device.info, requested);
     const bool shade_records = shade_in_two_kernels(settings);
     // The one place the pool size is chosen: the request or the default,
     // capped at the pixels, and by default at what the device holds (below).
