@@ -259,6 +259,12 @@ WF_GPU_INLINE bool shade_surface(PathState* path, const RenderParams* params, ui
     return true;
 }
 
+/* The light sample's direction in the shading frame. */
+WF_INLINE float3 light_in_frame(const ShadeContext* c) {
+    return vec_to_float3(vec_in_frame_x1(vec_from_float3(c->light.wi), vec_from_float3(c->frame.x),
+                                         vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
+}
+
 /* The light sample of the query, where it takes one, and its direction in
  * the shading frame (as the lanes find it: stages/shade_lanes.h). */
 WF_INLINE void shade_light(const RenderParams* params, const Scene* scene, ShadeContext* c) {
@@ -266,8 +272,7 @@ WF_INLINE void shade_light(const RenderParams* params, const Scene* scene, Shade
     c->query.wi_light = (float3)(0.0f, 0.0f, 1.0f);
     if (!c->query.light) return;
     c->light = sample_light(params, scene, c->position, c->light_u);
-    c->query.wi_light = vec_to_float3(vec_in_frame_x1(vec_from_float3(c->light.wi), vec_from_float3(c->frame.x),
-                                                      vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
+    c->query.wi_light = light_in_frame(c);
 }
 
 /* The scatter's inputs for one path, at width 1: its surface, its light

@@ -1,7 +1,8 @@
 /* shade_two_kernels.h — shade as two kernels over the extension queue, where
  * the wavefront's global-queue schedules run it so (WF_SHADE_IN_TWO;
- * include/wavefront/shade_record.h says when and why): shade_surface_path runs shade_path's steps up to the surface (the
- * arrival, the emission it finds, the BSDF's parameters) and leaves the
+ * include/wavefront/shade_record.h says when and why): shade_surface_path
+ * runs shade_path's steps up to the surface (the arrival, the emission it
+ * finds, the BSDF's parameters) and leaves the
  * ShadeContext in the slot's record; shade_bsdf_path reads it back and runs
  * the rest (the light sample, its shadow ray, the BSDF core, the scatter).
  * The same steps on the same values, through memory that keeps every bit:
@@ -101,7 +102,7 @@ WF_INLINE void load_shade_query(const RenderParams* params, const Scene* scene, 
 
 /* The light sample as the scatter reads it (scatter_light_x1), and the BSDF
  * there: the direction, in the world and, found again as shade_light found
- * it, in the frame; the radiance, pdf and kind; f and its pdf. */
+ * it (light_in_frame), in the frame; the radiance, pdf and kind; f and its pdf. */
 WF_INLINE void store_scatter_light(__global float4* rows, uint n, uint slot, const LightSample* l) {
     *shade_row(rows, n, WF_SHADE_ROW_light_wi, slot) = (float4)(l->wi, l->delta ? 1.0f : 0.0f);
     *shade_row(rows, n, WF_SHADE_ROW_light_radiance, slot) = (float4)(l->radiance, l->pdf);
@@ -120,8 +121,7 @@ WF_INLINE void load_scatter_light(__global float4* rows, uint n, uint slot, Shad
     c->light.delta = wi.w != 0.0f;
     c->light.radiance = radiance.xyz;
     c->light.pdf = radiance.w;
-    c->query.wi_light = vec_to_float3(vec_in_frame_x1(vec_from_float3(c->light.wi), vec_from_float3(c->frame.x),
-                                                      vec_from_float3(c->frame.y), vec_from_float3(c->frame.z)));
+    c->query.wi_light = light_in_frame(c);
     a->f_light = f.xyz;
     a->pdf_light = f.w;
 }
