@@ -33,10 +33,6 @@ constexpr int kBinCount = 16;
 // with anything from 0.33 to 1.
 constexpr double kTraversalCost = 0.5;
 
-// Four-triangle tests that n triangles take, in leaves of at most max_leaf
-// (a two-level tree's top prices a placement as one such test).
-double leaf_tests(uint32_t n, uint32_t max_leaf) { return static_cast<double>((n + max_leaf - 1) / max_leaf); }
-
 struct PrimRef {
     Bounds bounds;
     glm::vec3 centroid;
@@ -232,6 +228,8 @@ uint32_t Builder::median_split(uint32_t begin, uint32_t end, const Bounds& centr
 }
 
 } // namespace
+
+double leaf_tests(uint32_t n, uint32_t max_leaf) { return static_cast<double>((n + max_leaf - 1) / max_leaf); }
 
 double half_area(const Bounds& b) {
     if (b.empty()) return 0.0;

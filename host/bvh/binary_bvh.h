@@ -45,6 +45,11 @@ BinaryBvh build_binary_bvh(const std::vector<glm::vec3>& positions);
 // there are none or one is empty or not finite.
 BinaryBvh build_binary_bvh(const std::vector<Bounds>& boxes);
 
+// Four-triangle tests that n triangles take, in leaves of at most max_leaf
+// (a two-level tree's top prices a placement as one such test): SAH's cost
+// of a leaf, in the unit of the builders' costs.
+double leaf_tests(uint32_t n, uint32_t max_leaf);
+
 // Half the surface area, which SAH weighs by; in double, where the products of
 // float extents cannot overflow. 0 for an empty box.
 double half_area(const Bounds& b);

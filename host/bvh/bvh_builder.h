@@ -1,10 +1,12 @@
 // bvh_builder.h — the bounding volume hierarchy over a scene's triangles, in
 // the layout the kernels traverse (kernels/geometry/bvh_traverse.h,
 // include/wavefront/scene_types.h): the binned-SAH binary tree of
-// host/bvh/binary_bvh.h collapsed into 8-wide nodes.
+// host/bvh/binary_bvh.h collapsed into 8-wide nodes, the collapse of least
+// SAH cost (below) of that binary tree.
 //
 // Promises: node 0 has one slot, the scene's box over the top of the tree;
-// every other node is the child of exactly one node before it; every triangle
+// every other node is the child of exactly one node before it, its children
+// in slots of decreasing area; every triangle
 // in exactly one leaf, a run of one to eight consecutive BVH positions, placed
 // in blocks of four as host/bvh/leaf_blocks.h says; every
 // child box holding its children's boxes and its triangles' corners, and every
@@ -21,6 +23,13 @@
 #include "wavefront/scene_types.h"
 
 namespace wf {
+
+// The collapse's price of a node visit, in four-triangle tests (the unit of
+// leaf_tests, host/bvh/binary_bvh.h): it builds the tree of least SAH cost,
+// each node's box area times this plus each leaf's times its tests.
+constexpr double kNodeCost = 1.0;
+// The most triangles in one leaf: what its child word can count.
+constexpr uint32_t kMaxLeafRun = (~WF_BVH_LEAF >> WF_BVH_COUNT_SHIFT) + 1;
 
 // The mark in Bvh::order of a block's lane that no leaf uses.
 constexpr uint32_t kNoTriangle = 0xffffffffu;
