@@ -4,13 +4,18 @@
 // Each node sorts its triangles' centroids into kBinCount bins per axis and
 // takes the bin boundary of least SAH cost. Costs count tests of four
 // triangles, as the float4 leaf test makes them: a leaf of one to four costs
-// the same, so splits that leave children of multiples of four pay. A node
-// stays a leaf when it holds at most kMaxLeafSize triangles and no split pays
-// for itself. Without a usable split (all centroids in one place, or a box of
-// zero area, which SAH cannot rank), the triangles are halved at the centroid
-// median instead, by index when all centroids coincide. A split that would
-// leave too few levels below it is also replaced by the median split, which
-// halves the count and so always fits: depth stays within kMaxBinaryDepth.
+// the same, so splits that leave children of multiples of four pay. The tree
+// goes down to single triangles: the collapse into wide nodes
+// (bvh_builder.cpp) makes the leaves, of up to eight triangles, choosing
+// among all of this tree's subtrees by the same costs (stopping here at four,
+// where SAH said a leaf paid, cost the Cornell box's bounce rays a fifth of
+// their speed: bench/results/ray-throughput.md). Two triangles split without
+// binning, one a side. Without a usable split (all centroids in one place, or
+// a box of zero area, which SAH cannot rank), up to kMaxLeafSize triangles
+// stay a leaf, and more are halved at the centroid median, by index when all
+// centroids coincide. A split that would leave too few levels below it is
+// also replaced by the median split, which halves the count and so always
+// fits: depth stays within kMaxBinaryDepth.
 #include "bvh/binary_bvh.h"
 
 #include <algorithm>
@@ -155,10 +160,11 @@ uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, cons
     const uint32_t count = end - begin;
     const double area = half_area(bounds);
     if (count > 1 && area > 0.0) {
+        if (count == 2 && centroids.lo != centroids.hi && depth < kMaxBinaryDepth)
+            return begin + 1; // the one split there is
         const BinMap bin_map(centroids);
         const SahSplit sah = best_sah_split(begin, end, bin_map, area);
         if (sah.axis >= 0) {
-            if (count <= max_leaf_ && area * leaf_tests(count, max_leaf_) <= sah.cost) return end;
             const uint32_t larger_child = std::max(sah.left_count, count - sah.left_count);
             if (depth + median_levels(larger_child, max_leaf_) <= kMaxBinaryDepth) {
                 const auto first = prims_.begin() + begin;

@@ -3,7 +3,8 @@
 // kernels traverse.
 //
 // Promises: a binary tree rooted at node 0 whose two children always sit side
-// by side; every triangle in exactly one leaf, of at most 4 triangles; every
+// by side; every triangle in exactly one leaf, of one triangle save where
+// SAH finds no split or the depth bound stops it (then at most 4); every
 // box holding its children's boxes and its triangles' corners; at most
 // kMaxBinaryDepth levels. Built single-threaded; deterministic.
 #pragma once

@@ -55,44 +55,10 @@ class Collapser {
 public:
     // max_run: the most triangles (or boxes) a leaf of the wide tree may hold.
     Collapser(BinaryBvh binary, uint32_t max_run)
-        : binary_(std::move(binary)), first_(binary_.nodes.size()), triangles_(binary_.nodes.size()),
-          height_(binary_.nodes.size(), 0), as_leaf_(binary_.nodes.size(), false), best_(binary_.nodes.size()) {
-        // Children come after their parents, so a reverse sweep sees them first.
-        for (size_t n = binary_.nodes.size(); n-- > 0;) {
-            const BinaryBvhNode& node = binary_.nodes[n];
-            const double area = half_area(node.bounds);
-            Choices& c = best_[n];
-            if (node.count > 0) {
-                first_[n] = node.first;
-                triangles_[n] = node.count;
-                c.cost.fill(area * leaf_tests(node.count, kMaxLeafSize));
-                continue;
-            }
-            const uint32_t left = node.first, right = node.first + 1;
-            first_[n] = first_[left]; // a subtree's triangles are consecutive
-            triangles_[n] = triangles_[left] + triangles_[right];
-            height_[n] = 1 + std::max(height_[left], height_[right]);
-            // split[i]: the best share of i slots between the two children.
-            std::array<double, WF_BVH_WIDTH + 1> split{};
-            for (int i = 2; i <= WF_BVH_WIDTH; ++i) {
-                split[i] = std::numeric_limits<double>::infinity();
-                for (int k = 1; k < i; ++k) {
-                    const double cost = best_[left].cost[k] + best_[right].cost[i - k];
-                    if (cost < split[i]) {
-                        split[i] = cost;
-                        c.left_slots[i] = k;
-                    }
-                }
-            }
-            const double as_node = kNodeCost * area + split[WF_BVH_WIDTH];
-            const double as_leaf = area * leaf_tests(triangles_[n], kMaxLeafSize);
-            as_leaf_[n] = triangles_[n] <= max_run && as_leaf <= as_node;
-            c.cost[1] = as_leaf_[n] ? as_leaf : as_node;
-            for (int i = 2; i <= WF_BVH_WIDTH; ++i) {
-                c.fewer[i] = !(split[i] < c.cost[i - 1]);
-                c.cost[i] = c.fewer[i] ? c.cost[i - 1] : split[i];
-            }
-        }
+        : binary_(std::move(binary)), max_run_(max_run), first_(binary_.nodes.size()),
+          triangles_(binary_.nodes.size()), height_(binary_.nodes.size(), 0), as_leaf_(binary_.nodes.size(), false),
+          choices_(binary_.nodes.size()) {
+        price(0);
     }
 
     // Node 0 has one slot, the binary root: traversal starts below it and
@@ -105,14 +71,54 @@ public:
     }
 
 private:
-    // For one binary node, as the subtree under it would cost taking at most
-    // i slots of a wide node (cost[i], SAH times its area), and how: with
+    // The least costs of binary node n's subtree in at most i slots of a wide
+    // node, cost[i] for i = 1 to 8 (SAH times its area), and how (choices_):
+    // in one slot, as a leaf or a node of its own (as_leaf_); in more, with
     // fewer, or its left child taking left_slots[i] and its right the rest.
+    // Recursive, so that only the path being priced holds costs (the
+    // binary tree's depth is bounded: kMaxBinaryDepth).
+    using Costs = std::array<double, WF_BVH_WIDTH + 1>;
     struct Choices {
-        std::array<double, WF_BVH_WIDTH + 1> cost{};
-        std::array<int, WF_BVH_WIDTH + 1> left_slots{};
-        std::array<bool, WF_BVH_WIDTH + 1> fewer{};
+        std::array<uint8_t, WF_BVH_WIDTH + 1> left_slots{};
+        uint16_t fewer = 0; // bit i: at most i slots cost what at most i - 1 do
     };
+
+    Costs price(uint32_t n) {
+        const BinaryBvhNode& node = binary_.nodes[n];
+        const double area = half_area(node.bounds);
+        Costs cost{};
+        if (node.count > 0) {
+            first_[n] = node.first;
+            triangles_[n] = node.count;
+            cost.fill(area * leaf_tests(node.count, kMaxLeafSize));
+            return cost;
+        }
+        const uint32_t left = node.first, right = node.first + 1;
+        const Costs left_cost = price(left), right_cost = price(right);
+        first_[n] = first_[left]; // a subtree's triangles are consecutive
+        triangles_[n] = triangles_[left] + triangles_[right];
+        height_[n] = 1 + std::max(height_[left], height_[right]);
+        Choices& c = choices_[n];
+        Costs split{}; // split[i]: the cheapest share of i slots between the two children
+        for (int i = 2; i <= WF_BVH_WIDTH; ++i) {
+            split[i] = std::numeric_limits<double>::infinity();
+            for (int k = 1; k < i; ++k)
+                if (left_cost[k] + right_cost[i - k] < split[i]) {
+                    split[i] = left_cost[k] + right_cost[i - k];
+                    c.left_slots[i] = static_cast<uint8_t>(k);
+                }
+        }
+        const double as_node = kNodeCost * area + split[WF_BVH_WIDTH];
+        const double as_leaf = area * leaf_tests(triangles_[n], kMaxLeafSize);
+        as_leaf_[n] = triangles_[n] <= max_run_ && as_leaf <= as_node;
+        cost[1] = as_leaf_[n] ? as_leaf : as_node;
+        for (int i = 2; i <= WF_BVH_WIDTH; ++i) {
+            const bool fewer = !(split[i] < cost[i - 1]);
+            c.fewer |= static_cast<uint16_t>(fewer ? 1u << i : 0u);
+            cost[i] = fewer ? cost[i - 1] : split[i];
+        }
+        return cost;
+    }
 
     bool interior(uint32_t n) const { return binary_.nodes[n].count == 0; }
 
@@ -127,12 +133,12 @@ private:
 
     // The subtrees that binary node `n`, taking at most `slots` slots, puts in them.
     void pieces(uint32_t n, int slots, std::vector<uint32_t>& kids) const {
-        while (slots > 1 && interior(n) && best_[n].fewer[slots]) --slots;
+        while (slots > 1 && interior(n) && (choices_[n].fewer >> slots & 1u)) --slots;
         if (slots == 1 || !interior(n)) {
             kids.push_back(n);
             return;
         }
-        const int left = best_[n].left_slots[slots];
+        const int left = choices_[n].left_slots[slots];
         pieces(binary_.nodes[n].first, left, kids);
         pieces(binary_.nodes[n].first + 1, slots - left, kids);
     }
@@ -152,7 +158,7 @@ private:
     // stack's budget, the largest boxes opened first while they fit.
     std::vector<uint32_t> open(uint32_t n, int budget) const {
         std::vector<uint32_t> kids;
-        const int left = best_[n].left_slots[WF_BVH_WIDTH];
+        const int left = choices_[n].left_slots[WF_BVH_WIDTH];
         pieces(binary_.nodes[n].first, left, kids);
         pieces(binary_.nodes[n].first + 1, WF_BVH_WIDTH - left, kids);
         if (fits(kids, budget)) return by_area(kids);
@@ -206,13 +212,14 @@ private:
         }
     }
 
-    // Per binary node: its subtree's triangles, its height, and whether, left
-    // unopened, it becomes a leaf rather than a node.
+    // Per binary node: its subtree's triangles, its height, whether in one
+    // slot it is a leaf rather than a node, and how it shares slots.
     BinaryBvh binary_;
+    uint32_t max_run_;
     std::vector<uint32_t> first_, triangles_;
     std::vector<int> height_;
     std::vector<bool> as_leaf_;
-    std::vector<Choices> best_;
+    std::vector<Choices> choices_;
     Bvh bvh_;
 };
 
