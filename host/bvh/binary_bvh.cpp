@@ -32,11 +32,6 @@ namespace {
 
 // 16 bins find splits nearly as good as a full sweep at a fraction of its cost.
 constexpr int kBinCount = 16;
-// The cost of a binary interior node in units of one four-triangle test. The
-// collapse into 8-wide nodes leaves about one node visit (which costs about
-// one such test) for every two or three binary levels; the kernels ran as fast
-// with anything from 0.33 to 1.
-constexpr double kTraversalCost = 0.5;
 
 struct PrimRef {
     Bounds bounds;
@@ -76,7 +71,8 @@ struct SahSplit {
     int axis = -1; // -1 when no boundary has triangles on both sides
     int bin = 0;   // bins below it go left
     uint32_t left_count = 0;
-    // The node's area times its SAH cost, in units of one four-triangle test.
+    // The children's areas times their four-triangle tests as leaves: SAH's
+    // cost of the split, less the node's own share, the same for every split.
     double cost = std::numeric_limits<double>::infinity();
 };
 
@@ -90,7 +86,7 @@ private:
     // Reorders [begin, end) and returns where the second child starts, or end
     // for a leaf.
     uint32_t split(uint32_t begin, uint32_t end, const Bounds& bounds, const Bounds& centroids, int depth);
-    SahSplit best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map, double area) const;
+    SahSplit best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map) const;
     uint32_t median_split(uint32_t begin, uint32_t end, const Bounds& centroids);
 
     std::vector<PrimRef> prims_;
@@ -163,7 +159,7 @@ uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, cons
         if (count == 2 && centroids.lo != centroids.hi && depth < kMaxBinaryDepth)
             return begin + 1; // the one split there is
         const BinMap bin_map(centroids);
-        const SahSplit sah = best_sah_split(begin, end, bin_map, area);
+        const SahSplit sah = best_sah_split(begin, end, bin_map);
         if (sah.axis >= 0) {
             const uint32_t larger_child = std::max(sah.left_count, count - sah.left_count);
             if (depth + median_levels(larger_child, max_leaf_) <= kMaxBinaryDepth) {
@@ -179,7 +175,7 @@ uint32_t Builder::split(uint32_t begin, uint32_t end, const Bounds& bounds, cons
     return median_split(begin, end, centroids);
 }
 
-SahSplit Builder::best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map, double area) const {
+SahSplit Builder::best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin_map) const {
     struct Bin {
         Bounds bounds;
         uint32_t count = 0;
@@ -213,7 +209,7 @@ SahSplit Builder::best_sah_split(uint32_t begin, uint32_t end, const BinMap& bin
             left.grow(row[b - 1].bounds);
             left_total += row[b - 1].count;
             if (left_total == 0 || right_count[b] == 0) continue;
-            const double cost = kTraversalCost * area + half_area(left) * leaf_tests(left_total, max_leaf_) +
+            const double cost = half_area(left) * leaf_tests(left_total, max_leaf_) +
                                 right_area[b] * leaf_tests(right_count[b], max_leaf_);
             if (cost < best.cost) best = SahSplit{axis, b, left_total, cost};
         }
