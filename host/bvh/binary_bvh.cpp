@@ -15,7 +15,8 @@
 // stay a leaf, and more are halved at the centroid median, by index when all
 // centroids coincide. A split that would leave too few levels below it is
 // also replaced by the median split, which halves the count and so always
-// fits: depth stays within kMaxBinaryDepth.
+// fits, or by a leaf where four triangles or fewer are left: depth stays
+// within kMaxBinaryDepth.
 #include "bvh/binary_bvh.h"
 
 #include <algorithm>

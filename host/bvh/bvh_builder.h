@@ -2,7 +2,8 @@
 // the layout the kernels traverse (kernels/geometry/bvh_traverse.h,
 // include/wavefront/scene_types.h): the binned-SAH binary tree of
 // host/bvh/binary_bvh.h collapsed into 8-wide nodes, the collapse of least
-// SAH cost (below) of that binary tree.
+// SAH cost (below) of that binary tree, save where traversal's stack bound
+// forbids it (bvh_builder.cpp).
 //
 // Promises: node 0 has one slot, the scene's box over the top of the tree;
 // every other node is the child of exactly one node before it, its children

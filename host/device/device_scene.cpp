@@ -84,6 +84,14 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         d.lights.push_back(LightEntry{0.0f, 0u, index, 0.0f, kind, {0u, 0u, 0u}});
         light_weights.push_back(power);
     };
+    // Emissive triangles join the light list in the scene's order, not the
+    // tree's, so that which one a sample picks does not hang on how the BVH
+    // was built (a scene and its instanced twin, or two builders, draw alike).
+    struct Emitter {
+        uint32_t triangle, position;
+        double power;
+    };
+    std::vector<Emitter> emitters;
     for (size_t i = 0; i < n; ++i) {
         TriangleBlock& block = d.triangles[i / WF_BLOCK_LANES];
         const size_t lane = i % WF_BLOCK_LANES;
@@ -99,11 +107,15 @@ DeviceSceneData make_device_scene_data(const Scene& scene, const Bvh& bvh) {
         store3(nrm.n0, scene.normals[3 * t]);
         store3(nrm.n1, scene.normals[3 * t + 1]);
         store3(nrm.n2, scene.normals[3 * t + 2]);
-        const double power = triangle_power(scene, textured, t);
-        if (power > 0.0) {
-            block.light[lane] = static_cast<int32_t>(d.lights.size());
-            add_light(WF_LIGHT_TRIANGLE, static_cast<uint32_t>(i), power);
-        }
+        if (const double power = triangle_power(scene, textured, t); power > 0.0)
+            emitters.push_back({t, static_cast<uint32_t>(i), power});
+    }
+    std::sort(emitters.begin(), emitters.end(),
+              [](const Emitter& a, const Emitter& b) { return a.triangle < b.triangle; });
+    for (const Emitter& e : emitters) {
+        d.triangles[e.position / WF_BLOCK_LANES].light[e.position % WF_BLOCK_LANES] =
+            static_cast<int32_t>(d.lights.size());
+        add_light(WF_LIGHT_TRIANGLE, e.position, e.power);
     }
     d.emissive_triangles = static_cast<uint32_t>(d.lights.size());
     add_texture_data(scene, bvh.order, d);

@@ -67,8 +67,9 @@
  * whose hits may cull the others, and pushes the others as they come (a full
  * sort of them bought nothing measurable, bench/results/ray-throughput.md);
  * an any-hit query, which its first hit ends wherever it is, goes on to the
- * last slot met, the child the collapse opened last (faster for shadow rays
- * than the first). Each pending child keeps where the ray enters its box, and is
+ * last slot met, the smallest box met (the collapse puts a node's children in
+ * slots of decreasing area, host/bvh/bvh_builder.cpp: faster for shadow rays
+ * than the binary tree's order). Each pending child keeps where the ray enters its box, and is
  * dropped when popped if the window's end has since fallen below that entry:
  * the box test itself would now fail (its exit is scaled by the same
  * 1 + 2^-21), so nothing is culled that the test would keep. The stack holds

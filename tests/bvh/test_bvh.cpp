@@ -190,6 +190,7 @@ private:
         ++visits_[index];
         const BvhNode& node = scene_.bvh.nodes[index];
         int used = 0, deepest = 0;
+        double last_area = std::numeric_limits<double>::infinity();
         for (int slot = 0; slot < WF_BVH_WIDTH; ++slot) {
             const Box box = slot_box(node, slot);
             if (box.lo.x == kInfinity) { // unused: an empty box, which no ray meets, and no child
@@ -199,6 +200,9 @@ private:
             }
             ++used;
             if (parent) EXPECT_TRUE(inside(*parent, box)) << "node " << index << " slot " << slot << " outside";
+            const double area = half_area(Bounds{box.lo, box.hi});
+            EXPECT_LE(area, last_area) << "node " << index << " slot " << slot << ": slots by decreasing area";
+            last_area = area;
             const uint32_t child = node.child[slot];
             if (child & WF_BVH_LEAF) {
                 const uint32_t first = child & WF_BVH_FIRST_MASK;
