@@ -32,8 +32,8 @@
 // height h (a leaf has 0) needs h + 1 left as it is. Each node is given a
 // budget, the room left to its subtree: the whole stack at the root, which
 // kMaxBinaryDepth keeps at least the root's height + 1. Where the cheapest
-// children would leave an interior child a budget below its own height + 1
-// (the children's budget being the node's, less k - 1), the node opens
+// children would leave one that becomes a node a budget below its own height
+// + 1 (the children's budget being the node's, less k - 1), the node opens
 // instead the largest child first while every one keeps that budget; so every
 // subtree fits its budget, and traversal never overflows its stack. It
 // binds rarely: at 139 of ToyCar's nodes (where long thin triangles make a

@@ -25,7 +25,7 @@ struct DeviceSceneData {
     WF_SCENE_BUFFERS(WF_SCENE_DATA_MEMBER)
 #undef WF_SCENE_DATA_MEMBER
     Environment environment{};                // passed by value in the render constants
-    uint32_t emissive_triangles = 0;          // the first entries of `lights`
+    uint32_t emissive_triangles = 0;          // the first entries of `lights`, in the scene's triangle order
     uint32_t environment_light = WF_NO_LIGHT; // its entry in `lights`
     float scene_diameter = 0.0f;              // of the triangles' bounds
 

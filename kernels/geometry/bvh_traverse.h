@@ -69,8 +69,9 @@
  * an any-hit query, which its first hit ends wherever it is, goes on to the
  * last slot met, the smallest box met (the collapse puts a node's children in
  * slots of decreasing area, host/bvh/bvh_builder.cpp: faster for shadow rays
- * than the binary tree's order). Each pending child keeps where the ray enters its box, and is
- * dropped when popped if the window's end has since fallen below that entry:
+ * than the binary tree's order). Each pending child keeps where the ray
+ * enters its box, and is dropped when popped if the window's end has since
+ * fallen below that entry:
  * the box test itself would now fail (its exit is scaled by the same
  * 1 + 2^-21), so nothing is culled that the test would keep. The stack holds
  * WF_BVH_STACK_SIZE children; the builder gives every subtree no more than
