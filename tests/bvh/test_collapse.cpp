@@ -46,7 +46,8 @@ private:
         if (!one_[n].empty()) return one_[n];
         const double area = half_area(b_.nodes[n].bounds);
         std::vector<double> costs;
-        if (!interior(n) || triangles_[n] <= kMaxLeafRun) costs.push_back(area * leaf_tests(triangles_[n], kMaxLeafSize));
+        if (!interior(n) || triangles_[n] <= kMaxLeafRun)
+            costs.push_back(area * leaf_tests(triangles_[n], kMaxLeafSize));
         if (interior(n))
             for (const Spread& pair : children_side_by_side(n))
                 costs.push_back(kNodeCost * area + pair.second);
