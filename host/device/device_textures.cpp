@@ -4,6 +4,7 @@
 // coordinates and tangents in BVH order, only for scenes with textures, and
 // per-triangle vertex colours, only for scenes whose colours are not all white.
 #include "device/device_scene.h"
+#include "device/texel_interleave.h"
 
 namespace wf {
 
@@ -48,8 +49,9 @@ void add_texture_data(const Scene& scene, const std::vector<uint32_t>& triangle_
                 for (int i = 0; i < 4; ++i) corners[k][i] = scene.colors[3 * t + k][i];
             d.colors.push_back(c);
         }
-    d.texture_infos = scene.textures.infos;
-    d.texels = scene.textures.texels;
+    InterleavedTexels interleaved = interleave_texels(scene);
+    d.texture_infos = std::move(interleaved.infos);
+    d.texels = std::move(interleaved.texels);
     for (const SceneMaterial& m : scene.materials) {
         d.texture_refs.insert(d.texture_refs.end(), m.textures.begin(), m.textures.end());
         MaterialTextureParams p{};

@@ -91,6 +91,7 @@ uint32_t TextureSet::add_texels(const DecodedImage& image, const std::string& wh
 
 int32_t TextureSet::add_info(const TextureInfo& info, const std::string& name) {
     infos.push_back(info);
+    infos.back().stride = 1;
     names.push_back(name);
     return int32_t(infos.size() - 1);
 }

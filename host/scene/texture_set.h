@@ -47,7 +47,8 @@ struct TextureSet {
     // Appends an image's texels; returns their offset. Throws InputError
     // ("<where>: ...") when the set would pass 2^32 texels.
     uint32_t add_texels(const DecodedImage& image, const std::string& where);
-    // Appends a TextureInfo; returns its index.
+    // Appends a TextureInfo, its texels together (stride 1: the device's copy
+    // may interleave them, device/texel_interleave.h); returns its index.
     int32_t add_info(const TextureInfo& info, const std::string& name);
 
     size_t bytes() const { return infos.size() * sizeof(TextureInfo) + texels.size() * sizeof(uint32_t); }

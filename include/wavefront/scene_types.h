@@ -116,8 +116,8 @@ typedef struct Material {
 /* A texture as the kernels sample it (kernels/materials/texture.h). Texels
  * are RGBA8 packed in one uint32 each (R in the low byte), rows from the top
  * of the image down, `width * height` of them from `offset` in the scene's one
- * texel buffer. Several TextureInfos may share texels (one image under two
- * samplers or colour spaces). */
+ * texel buffer, `stride` apart. Several TextureInfos may share texels (one
+ * image under two samplers or colour spaces). */
 #define WF_TEXTURE_SRGB 1u    /* RGB are sRGB-encoded: decoded per texel before filtering */
 #define WF_TEXTURE_NEAREST 2u /* the sampler's magFilter is NEAREST: no bilinear filtering */
 
@@ -133,7 +133,8 @@ typedef struct TextureInfo {
     uint32_t wrap_s;   /* WF_WRAP_*, along u (image x) */
     uint32_t wrap_t;   /* WF_WRAP_*, along v (image y, down) */
     uint32_t channels; /* the source image's: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA */
-    uint32_t pad;
+    uint32_t stride;   /* texels from one of the image's texels to the next: 1, or the number of
+                          images interleaved with it (host/device/texel_interleave.h) */
 } TextureInfo;
 
 /* How a material reads one texture: which one, with which texture coordinate

@@ -77,7 +77,7 @@ WF_INLINE uint32_t texture_wrap_index(int32_t i, uint32_t wrap, uint32_t size) {
 /* One texel as linear RGBA in [0, 1]. */
 WF_INLINE float4 texture_texel(WF_GLOBAL const TextureInfo* info, WF_GLOBAL const uint32_t* texels,
                                uint32_t x, uint32_t y) {
-    const uint32_t bits = texels[info->offset + y * info->width + x];
+    const uint32_t bits = texels[info->offset + (y * info->width + x) * info->stride];
     const float4 c = make_float4((float)(bits & 0xffu), (float)((bits >> 8) & 0xffu),
                                  (float)((bits >> 16) & 0xffu), (float)(bits >> 24)) *
                      (1.0f / 255.0f);

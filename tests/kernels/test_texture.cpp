@@ -38,6 +38,7 @@ struct TestTextures {
         info.wrap_s = wrap_s;
         info.wrap_t = wrap_t;
         info.channels = 4;
+        info.stride = 1;
         texels.insert(texels.end(), rgba.begin(), rgba.end());
         infos.push_back(info);
         return int32_t(infos.size() - 1);
