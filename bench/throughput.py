@@ -175,7 +175,7 @@ def main():
         out["local_sweep"].append({"local_size": local, **rates(s)})
 
     # Queue-push strategies, Cornell box.
-    for push in ("group", "atomic", "scan"):
+    for push in ("group", "atomic", "scan", "serial"):
         s = render("scenes/cornell-box.gltf", base + ["--queue-push", push], cache)
         out["push_sweep"].append({"queue_push": push, **rates(s)})
 

@@ -238,8 +238,10 @@ void declare_render(CLI::App& render, RenderOptions& o, RenderFlags& f) {
                     with_default("Sort the paths by the material they hit before shading, wavefront only", "off"));
     f.queue_push = queue_push_name(s.queue_push);
     render.add_option("--queue-push", f.queue_push,
-                      with_default("How kernels append to queues: group (one atomic per work-group), atomic (one "
-                                   "per item) or scan (prefix sum)", f.queue_push))
+                      with_default("How kernels append to queues: group (one atomic per work-group, the shares "
+                                   "by local atomics), atomic (one per item), scan (prefix sum), serial (one "
+                                   "item sums the group's shares) or auto (serial on a CPU's kernels, else group)",
+                                   f.queue_push))
         ->check(CLI::IsMember(names_of(kQueuePushNames)));
     render.add_option("--local-size", s.local_size, with_default("Work-items per work-group", s.local_size))
         ->check(whole_number(16, 1024));

@@ -29,8 +29,9 @@ enum class Schedule {
 };
 
 // How the kernels append to queues and counters (kernels/common/queue_push.h),
-// in the order of its WF_PUSH_* values.
-enum class QueuePush { Group, Atomic, Scan };
+// in the order of its WF_PUSH_* values; Auto: the kind of kernels' own
+// (queue_push_for, render/device_renderer.cpp).
+enum class QueuePush { Group, Atomic, Scan, Serial, Auto };
 
 // Which device kind's kernels to build (render_program_source, device_renderer.h):
 // the device's own, or another kind's, so that a GPU's kernels run and are
@@ -41,7 +42,7 @@ enum class KernelKind { Cpu, Gpu, Auto };
 using ChoiceNames = std::array<const char*, 5>; // unused entries are null
 constexpr ChoiceNames kIntegratorNames = {"wavefront", "megakernel", nullptr};
 constexpr ChoiceNames kScheduleNames = {"refill", "passes", "fullest", "group", "auto"};
-constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan"};
+constexpr ChoiceNames kQueuePushNames = {"group", "atomic", "scan", "serial", "auto"};
 constexpr ChoiceNames kKernelKindNames = {"cpu", "gpu", "auto"};
 constexpr ChoiceNames kLightSamplingNames = {"bsdf", "nee", "mis"};
 constexpr ChoiceNames kHemisphereNames = {"uniform", "cosine", nullptr};
@@ -112,7 +113,7 @@ struct RenderSettings {
     std::string cache_dir;      // where compiled programs are kept (host/device/program_cache.h); empty: nowhere
     Integrator integrator = Integrator::Wavefront;
     Schedule schedule = Schedule::Auto; // for the wavefront integrator; the renderer resolves Auto
-    QueuePush queue_push = QueuePush::Group;
+    QueuePush queue_push = QueuePush::Auto; // the renderer resolves Auto
     bool sort_materials = false; // reorder the extension queue by material before shade
     // The group schedule's BSDF lanes (kernels/stages/shade_lanes.h): 1 (none), 8
     // or 16 paths a work-item; 0: 8 on a device of 8-float vectors or wider,

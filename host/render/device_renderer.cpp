@@ -38,6 +38,15 @@ Schedule schedule_for(const DeviceInfo& device, const RenderSettings& settings) 
                                                : settings.schedule;
 }
 
+// How the kernels push, as asked, or with QueuePush::Auto the kind of
+// kernels' own: a GPU's gathers a work-group's shares with local atomics, a
+// CPU's with one work-item's loop, where a work-group runs on one thread and
+// each local atomic is a locked instruction (kernels/common/queue_push.h).
+QueuePush queue_push_for(const DeviceInfo& device, const RenderSettings& settings) {
+    if (settings.queue_push != QueuePush::Auto) return settings.queue_push;
+    return gpu_kernels(device, settings) ? QueuePush::Group : QueuePush::Serial;
+}
+
 // The group schedule's lanes: as asked, else 8 where the device's vectors hold
 // 8 floats or more (AVX2, AVX-512), and 1 (no lanes) on devices of narrower
 // vectors, GPUs among them, whose work-items are lanes already (so in a GPU's
@@ -65,6 +74,7 @@ uint32_t trace_width(const DeviceInfo& device, const Scene& scene, const RenderS
 RenderSettings resolved_for(const DeviceInfo& device, const RenderSettings& settings) {
     RenderSettings resolved = settings;
     resolved.schedule = schedule_for(device, settings);
+    resolved.queue_push = queue_push_for(device, settings);
     resolved.kernels = gpu_kernels(device, settings) ? KernelKind::Gpu : KernelKind::Cpu;
     return resolved;
 }
@@ -105,11 +115,12 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
         p.options += " -DWF_STATIC_FUNCTIONS=1 -DWF_GLASS_TABLE_IN_SCENE=1 -DWF_GPU_TRAVERSAL=1 -DWF_TRAVERSAL_LOCAL_SIZE=" +
                      std::to_string(settings.local_size);
     if (settings.aovs & WF_AOV_FIRST_HIT) p.options += " -DWF_HAS_AOVS=1"; // absent, the first hit adds nothing beside radiance
-    if (settings.queue_push != QueuePush::Group) // the default needs no define, and keeps its cache entries
-        p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(settings.queue_push));
+    const QueuePush push = queue_push_for(device, settings);
+    if (push != QueuePush::Group) // the kernels' own default needs no define
+        p.options += " -DWF_QUEUE_PUSH=" + std::to_string(static_cast<int>(push));
     const bool group = settings.integrator == Integrator::Wavefront && schedule_for(device, settings) == Schedule::Group;
-    // The scan and the group schedule size their local arrays by the launch's local size.
-    if (settings.queue_push == QueuePush::Scan || group)
+    // The scan, the serial sum and the group schedule size their local arrays by the launch's local size.
+    if (push == QueuePush::Scan || push == QueuePush::Serial || group)
         p.options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
     // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/stages/shade_lanes.h).
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
@@ -200,7 +211,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     summary_.environment = scene.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
-    summary_.queue_push = settings.queue_push;
+    summary_.queue_push = queue_push_for(device.info, settings);
     summary_.local_size = settings.local_size;
     summary_.traversal_bytes = data.traversal_bytes();
     summary_.width = size.width;

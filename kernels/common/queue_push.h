@@ -1,13 +1,21 @@
 /* queue_push.h — appending path slots to a queue, and counting.
  *
  * WF_QUEUE_PUSH picks how (--queue-push; the image is the same either way):
- *   WF_PUSH_GROUP  (default) one global atomic per work-group and counter,
- *                  after the group's shares are gathered by local atomics;
+ *   WF_PUSH_GROUP  (a GPU's default) one global atomic per work-group and
+ *                  counter, after the group's shares are gathered by local
+ *                  atomics;
  *   WF_PUSH_ATOMIC one global atomic per work-item (on PoCL about 100 plain
  *                  writes' worth each: the baseline the others are measured by);
  *   WF_PUSH_SCAN   a prefix sum over the work-group in local memory, then one
- *                  global atomic: order-preserving compaction (WF_LOCAL_SIZE
- *                  must be the launch's local size).
+ *                  global atomic: order-preserving compaction;
+ *   WF_PUSH_SERIAL (a CPU's default) the group's shares summed in order by one
+ *                  work-item, then one global atomic: a CPU runs a work-group
+ *                  on one thread, where each local atomic is a locked
+ *                  instruction that waits for every store before it (on the
+ *                  Cornell box's shadow rays, 15% of intersect_shadow) and the
+ *                  sum a plain loop; a GPU would leave the group's other
+ *                  work-items idle through it.
+ * SCAN and SERIAL need WF_LOCAL_SIZE, the launch's local size.
  *
  * Contract: every work-item of the group calls these functions, in the same
  * order, outside any divergent branch (they hold barriers). `scratch` is
@@ -23,11 +31,12 @@
 #define WF_PUSH_GROUP 0
 #define WF_PUSH_ATOMIC 1
 #define WF_PUSH_SCAN 2
+#define WF_PUSH_SERIAL 3
 #ifndef WF_QUEUE_PUSH
 #define WF_QUEUE_PUSH WF_PUSH_GROUP
 #endif
 
-#if WF_QUEUE_PUSH == WF_PUSH_SCAN
+#if WF_QUEUE_PUSH == WF_PUSH_SCAN || WF_QUEUE_PUSH == WF_PUSH_SERIAL
 #define WF_QUEUE_SCRATCH (WF_LOCAL_SIZE + 1)
 #else
 #define WF_QUEUE_SCRATCH 2
@@ -53,6 +62,22 @@ WF_FORCE_INLINE uint group_atomic_add(volatile __global uint* counter, uint amou
     if (lid == WF_LOCAL_SIZE - 1) scratch[WF_LOCAL_SIZE] = inclusive ? atomic_add(counter, inclusive) : 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     return scratch[WF_LOCAL_SIZE] + inclusive - amount;
+#elif WF_QUEUE_PUSH == WF_PUSH_SERIAL
+    /* Exclusive sums in place; scratch[WF_LOCAL_SIZE] carries the group's base. */
+    const uint lid = get_local_id(0);
+    scratch[lid] = amount;
+    barrier(CLK_LOCAL_MEM_FENCE);
+    if (lid == 0) {
+        uint sum = 0u;
+        for (uint i = 0u; i < WF_LOCAL_SIZE; ++i) {
+            const uint share = scratch[i];
+            scratch[i] = sum;
+            sum += share;
+        }
+        scratch[WF_LOCAL_SIZE] = sum ? atomic_add(counter, sum) : 0u;
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    return scratch[WF_LOCAL_SIZE] + scratch[lid];
 #else
     if (get_local_id(0) == 0) scratch[0] = 0;
     barrier(CLK_LOCAL_MEM_FENCE);

@@ -135,13 +135,13 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     split.shade_kernels = 2; // shade as two kernels with a record between them (include/wavefront/shade_record.h)
     expect_reference(split, {Schedule::Refill, Schedule::Fullest}, "two shade kernels");
     settings.schedule = Schedule::Refill;
-    for (const QueuePush push : {QueuePush::Atomic, QueuePush::Scan}) {
+    for (const QueuePush push : {QueuePush::Group, QueuePush::Atomic, QueuePush::Scan, QueuePush::Serial}) {
         settings.queue_push = push;
         const RenderOutput r = render(settings);
         EXPECT_TRUE(same_bytes(reference.film.mean, r.film.mean)) << queue_push_name(push);
         EXPECT_EQ(r.summary.stats.closest_rays, reference.summary.stats.closest_rays) << queue_push_name(push);
     }
-    settings.queue_push = QueuePush::Group;
+    settings.queue_push = RenderSettings{}.queue_push;
     settings.integrator = Integrator::Megakernel;
     const RenderOutput mega = render(settings);
     EXPECT_TRUE(same_bytes(reference.film.mean, mega.film.mean));
