@@ -142,8 +142,9 @@ __kernel void accumulate(WF_STAGE_PARAMS) {
  * launch, so that the group's stages run over a full queue instead of
  * dwindling to the longest path's few last bounces. A slot's pixels and
  * samples are the other schedules', and so are the bytes. Pushes are local
- * atomics: a work-group runs on one thread. */
-#ifdef WF_LOCAL_SIZE
+ * atomics: a work-group runs on one thread. Compiled for that schedule alone
+ * (WF_GROUP_SCHEDULE, render/device_renderer.cpp). */
+#if WF_GROUP_SCHEDULE
 /* Samples a slot may start in one launch: enough that the tail of a launch,
  * where the group's last paths run on alone, is a small part of it; few
  * enough that the host reads the counters (progress, Ctrl-C) often. */

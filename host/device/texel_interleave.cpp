@@ -3,9 +3,9 @@
 // takes them in that order, a group whole where its first image was.
 #include "device/texel_interleave.h"
 
-#include <algorithm>
 #include <cstring>
 #include <map>
+#include <set>
 
 namespace wf {
 namespace {
@@ -20,14 +20,15 @@ bool same_texel(const TextureRef& a, const TextureInfo& ia, const TextureRef& b,
 std::vector<std::vector<uint32_t>> image_groups(const Scene& scene) {
     const std::vector<TextureInfo>& infos = scene.textures.infos;
     std::vector<std::vector<uint32_t>> groups;
-    std::map<uint32_t, bool> placed;
+    std::set<uint32_t> placed;
     for (const SceneMaterial& m : scene.materials) {
         std::vector<const TextureRef*> firsts; // one reference per candidate group of this material
         std::vector<std::vector<uint32_t>> candidates;
+        std::set<uint32_t> taken; // by a candidate: an image read twice, at two texels, goes with the first
         for (const TextureRef& ref : m.textures) {
             if (ref.texture < 0) continue;
             const TextureInfo& info = infos[size_t(ref.texture)];
-            if (placed[info.offset]) continue;
+            if (placed.count(info.offset) || !taken.insert(info.offset).second) continue;
             size_t g = 0;
             while (g < firsts.size() &&
                    !same_texel(*firsts[g], infos[size_t(firsts[g]->texture)], ref, info))
@@ -36,12 +37,11 @@ std::vector<std::vector<uint32_t>> image_groups(const Scene& scene) {
                 firsts.push_back(&ref);
                 candidates.emplace_back();
             }
-            std::vector<uint32_t>& c = candidates[g];
-            if (std::find(c.begin(), c.end(), info.offset) == c.end()) c.push_back(info.offset);
+            candidates[g].push_back(info.offset);
         }
         for (std::vector<uint32_t>& c : candidates) {
             if (c.size() < 2) continue;
-            for (const uint32_t image : c) placed[image] = true;
+            placed.insert(c.begin(), c.end());
             groups.push_back(std::move(c));
         }
     }

@@ -122,6 +122,7 @@ RenderProgramSource render_program_source(const DeviceInfo& device, const SceneF
     // The scan, the serial sum and the group schedule size their local arrays by the launch's local size.
     if (push == QueuePush::Scan || push == QueuePush::Serial || group)
         p.options += " -DWF_LOCAL_SIZE=" + std::to_string(settings.local_size);
+    if (group) p.options += " -DWF_GROUP_SCHEDULE=1"; // group_wavefront, left out of the other schedules' programs
     // The group schedule shades BSDF kinds in lanes as wide as the device's vectors (kernels/stages/shade_lanes.h).
     if (const unsigned lanes = lane_width(device, settings, gpu); group && lanes > 1)
         p.options += " -DWF_LANE_WIDTH=" + std::to_string(lanes);
@@ -211,7 +212,7 @@ DeviceRenderer::DeviceRenderer(const OpenClDevice& device, const Scene& scene, c
     summary_.environment = scene.environment != nullptr;
     summary_.bvh_nodes = bvh.nodes.size();
     summary_.bvh_depth = bvh.depth;
-    summary_.queue_push = queue_push_for(device.info, settings);
+    summary_.queue_push = settings.queue_push;
     summary_.local_size = settings.local_size;
     summary_.traversal_bytes = data.traversal_bytes();
     summary_.width = size.width;

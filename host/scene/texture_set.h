@@ -1,7 +1,8 @@
-// texture_set.h — a scene's textures on the host, in the layout the kernels
+// texture_set.h — a scene's textures on the host, in the form the kernels
 // read (include/wavefront/scene_types.h, kernels/materials/texture.h): every
-// image's texels in one array of RGBA8 words, and one TextureInfo per
-// (image, sampler, colour space) the materials use. Images are decoded here
+// image's texels in one array of RGBA8 words, one image after another (the
+// device's copy interleaves some, device/texel_interleave.h), and one
+// TextureInfo per (image, sampler, colour space) the materials use. Images are decoded here
 // with OpenImageIO, from memory.
 //
 // Why RGBA8, 4 bytes a texel: DamagedHelmet's five 2048² images take 80 MiB

@@ -40,7 +40,7 @@
     X(PunctualLight, range) X(PunctualLight, intensity) X(PunctualLight, cos_outer)               \
     X(PunctualLight, cos_inner)                                                                   \
     X(TextureInfo, offset) X(TextureInfo, width) X(TextureInfo, height) X(TextureInfo, flags)     \
-    X(TextureInfo, wrap_s) X(TextureInfo, wrap_t) X(TextureInfo, channels) X(TextureInfo, stride)  \
+    X(TextureInfo, wrap_s) X(TextureInfo, wrap_t) X(TextureInfo, channels) X(TextureInfo, stride) \
     X(TextureRef, texture) X(TextureRef, texcoord) X(TextureRef, transform)                       \
     X(MaterialTextureParams, normal_scale) X(MaterialTextureParams, alpha_mode)                   \
     X(MaterialTextureParams, alpha_cutoff) X(MaterialTextureParams, base_alpha)

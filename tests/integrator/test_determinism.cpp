@@ -134,6 +134,9 @@ TEST_P(ScheduleDeterminism, EveryScheduleAndTheMegakernelGiveTheSameBytes) {
     RenderSettings split = settings;
     split.shade_kernels = 2; // shade as two kernels with a record between them (include/wavefront/shade_record.h)
     expect_reference(split, {Schedule::Refill, Schedule::Fullest}, "two shade kernels");
+    RenderSettings gpu_push = settings;
+    gpu_push.queue_push = QueuePush::Group; // a GPU's pushes (local atomics), where a CPU's default is serial
+    expect_reference(gpu_push, {Schedule::Group}, "group push");
     settings.schedule = Schedule::Refill;
     for (const QueuePush push : {QueuePush::Group, QueuePush::Atomic, QueuePush::Scan, QueuePush::Serial}) {
         settings.queue_push = push;

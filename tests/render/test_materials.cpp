@@ -165,6 +165,14 @@ TEST(Materials, BaseColourTextureReachesTheShading) {
     info.channels = 3;
     const int32_t texture = scene.textures.add_info(info, "checker");
     scene.materials[floor].textures[WF_TEXTURE_BASE_COLOR].texture = texture;
+    // A white metallic-roughness texture beside it (roughness and metallic as
+    // their factors say), read at the same texel: the device reads the
+    // checker interleaved with it (host/device/texel_interleave.h).
+    DecodedImage white = checker;
+    white.texels.assign(4, pack_rgba8(255, 255, 255, 255));
+    info.offset = scene.textures.add_texels(white, "test");
+    info.flags = WF_TEXTURE_NEAREST;
+    scene.materials[floor].textures[WF_TEXTURE_METALLIC_ROUGHNESS].texture = scene.textures.add_info(info, "white");
     scene.environment = std::make_shared<EnvironmentMap>(constant_environment(1.0f));
 
     RenderSettings settings;
