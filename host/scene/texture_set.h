@@ -2,8 +2,8 @@
 // read (include/wavefront/scene_types.h, kernels/materials/texture.h): every
 // image's texels in one array of RGBA8 words, one image after another (the
 // device's copy interleaves some, device/texel_interleave.h), and one
-// TextureInfo per (image, sampler, colour space) the materials use. Images are decoded here
-// with OpenImageIO, from memory.
+// TextureInfo per (image, sampler, colour space) the materials use. Images
+// are decoded here with OpenImageIO, from memory.
 //
 // Why RGBA8, 4 bytes a texel: DamagedHelmet's five 2048² images take 80 MiB
 // so, where float4 would take 320 MiB; the kernels decode a texel with a few
