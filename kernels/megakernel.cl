@@ -42,6 +42,7 @@ __kernel void megakernel(WF_STAGE_PARAMS) {
     group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], tally.closest_rays, scratch);
     group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], tally.shadow_rays, scratch);
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], tally.nonfinite, scratch);
+    group_atomic_add(&counters[WF_COUNTER_BUSY_SLOTS], tally.started != 0u ? 1u : 0u, scratch);
     group_histogram_add(&counters[WF_COUNTER_PATH_LENGTHS], WF_PATH_LENGTH_BUCKETS,
                         path_length_bucket(tally.started ? path_depth(&path, slot) : 0u), tally.started != 0u,
                         histogram);

@@ -350,6 +350,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite, scratch);
     group_atomic_add(&counters[WF_COUNTER_LANE_PATHS], lane_paths, scratch);
     group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
+    group_atomic_add(&counters[WF_COUNTER_BUSY_SLOTS], samples_started[lid] != 0u ? 1u : 0u, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
     group_atomic_add(&counters[WF_QUEUE_REGENERATE], samples_started[lid], scratch);

@@ -32,8 +32,7 @@ double RenderStats::pool_occupancy() const {
     double traced = 0.0, slots = 0.0;
     for (const CounterSnapshot& c : counter_reads) {
         if (c.closest_rays == 0) continue;
-        // A launch that traces whole paths: its share of the pool is its samples.
-        traced += whole_path_stage() != STAGE_COUNT ? c.samples : c.closest_rays;
+        traced += whole_path_stage() != STAGE_COUNT ? c.busy_slots : c.closest_rays;
         slots += c.pool_size;
     }
     return slots > 0.0 ? traced / slots : 0.0;
@@ -162,6 +161,7 @@ std::array<cl_uint, WF_COUNTER_COUNT> PathIntegrator::read_counters(uint32_t cle
     snapshot.closest_rays = counters[WF_COUNTER_CLOSEST_RAYS];
     snapshot.shadow_rays = counters[WF_COUNTER_SHADOW_RAYS];
     snapshot.pool_size = pool_.size();
+    snapshot.busy_slots = counters[WF_COUNTER_BUSY_SLOTS];
     for (int b = 0; b < WF_PATH_LENGTH_BUCKETS; ++b) {
         stats_.path_lengths[b] += counters[WF_COUNTER_PATH_LENGTHS + b];
         snapshot.samples += counters[WF_COUNTER_PATH_LENGTHS + b]; // every accumulated path is in one bucket

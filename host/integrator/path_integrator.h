@@ -66,6 +66,7 @@ struct CounterSnapshot {
     std::array<uint32_t, WF_QUEUE_COUNT> queues{};
     uint32_t closest_rays = 0, shadow_rays = 0, samples = 0;
     uint32_t pool_size = 0; // of the pool read
+    uint32_t busy_slots = 0; // those that started a sample, where one launch takes paths camera to film
 
     // As a row of the statistics' table (the stats JSON, the Python module),
     // in the order kColumns names: the queue lengths as read (the stage
@@ -102,7 +103,9 @@ struct RenderStats {
     std::array<uint64_t, WF_PATH_LENGTH_BUCKETS> path_lengths{};
     std::vector<CounterSnapshot> counter_reads; // one per iteration
     double kernel_seconds() const;
-    // Mean share of the pool traced by each launch of the closest-hit work.
+    // Mean share of the pool traced by each launch of the closest-hit work:
+    // its closest rays, or where one kernel takes paths from camera to film,
+    // its slots that started a sample (a group launch's may start several).
     double pool_occupancy() const;
     // Adds another device's counts and kernel times (a render over several
     // devices), and its counter reads if asked; leaves the time.

@@ -11,7 +11,8 @@
     X(SHADOW_RAYS, "shadow_rays", "shadow rays traced")                                            \
     X(NONFINITE, "nonfinite", "samples dropped for a NaN or Inf component")                        \
     X(LANE_PATHS, "lane_paths", "paths whose BSDF core ran in the group schedule's lanes")          \
-    X(LANE_SLOTS, "lane_slots", "lanes those runs took, filled or not: lane_paths / lane_slots is their fill")
+    X(LANE_SLOTS, "lane_slots", "lanes those runs took, filled or not: lane_paths / lane_slots is their fill") \
+    X(BUSY_SLOTS, "busy_slots", "slots that started a sample, in a launch that takes paths from camera to film")
 
 /* Finished paths by bounce count, in power-of-two buckets: 0, 1, 2–3, 4–7, ...,
  * the last open-ended; after the counters above. */

@@ -81,6 +81,15 @@ def test_statistics_agree_with_one_another(cache):
     assert "samples " in result.report
 
 
+def test_a_group_launch_counts_its_samples_against_what_each_slot_may_start(cache):
+    # One slot a pixel, and launches of 1, 1 and 2 samples a slot (the rounds
+    # of 1, 2 and 4 spp): every slot busy in each, the pool full, however
+    # many samples its slots start.
+    st = wavefront.render(CORNELL, cache_dir=cache, schedule="group", pool_size=48 * 36, **SMALL).stats
+    assert st.schedule == "group" and st.samples == 48 * 36 * 4 and st.iterations == 3
+    assert st.pool_occupancy == 1.0
+
+
 def test_first_hit_aovs_are_arrays(cache):
     result = wavefront.render(CORNELL, cache_dir=cache, aov=["albedo", "normal", "depth"], **SMALL)
     assert sorted(result.aovs) == ["albedo", "depth", "normal"]
