@@ -38,8 +38,9 @@ CONFIGS = [  # label, flags
     ("wavefront, passes", ["--schedule", "passes"]),
     ("wavefront, fullest", ["--schedule", "fullest"]),
     ("wavefront, group", ["--schedule", "group"]),  # a CPU's default: every stage inside each work-group
-    ("megakernel", ["--integrator", "megakernel"]),  # last
+    ("megakernel", ["--integrator", "megakernel"]),
 ]
+BUILD_CONFIGS = [CONFIGS[0], CONFIGS[3], CONFIGS[4]]  # refill, group, megakernel: one program each
 
 
 def render(scene, flags, cache, pocl_cache=None, warm_up=True):
@@ -72,7 +73,8 @@ def rates(s):
         "msamples_per_s": s["samples"] / seconds * 1e-6,
         "closest_mrays_per_s_wall": s["closest_rays"] / seconds * 1e-6,
         "closest_mrays_per_s_kernel": s["closest_rays"] / closest_kernel * 1e-6 if closest_kernel else 0.0,
-        "shadow_mrays_per_s_kernel": s["shadow_rays"] / shadow_kernel * 1e-6 if shadow_kernel else 0.0,
+        # None where no kernel traces shadow rays alone (the megakernel's and the group's do it all)
+        "shadow_mrays_per_s_kernel": s["shadow_rays"] / shadow_kernel * 1e-6 if shadow_kernel else None,
         "host_share": (seconds - s["times"]["kernels"]) / seconds,
         "occupancy": s["pool_occupancy"],
         "iterations": s["iterations"],
@@ -80,7 +82,13 @@ def rates(s):
         "traversal_bytes_per_triangle": s["memory"]["traversal_bytes_per_triangle"],
         "stage_seconds": {k: v["seconds"] for k, v in stages.items()},
         "render_seconds": seconds,
+        "schedule": s["integrator"] if s["integrator"] == "megakernel" else s["schedule"],
     }
+
+
+def rate(x):
+    """A rate's cell: two decimals, or a dash where there is none."""
+    return "—" if x is None else f"{x:.2f}"
 
 
 def without_counters(s):
@@ -137,7 +145,7 @@ def main():
 
     # Kernel build, cold (empty program and PoCL caches) then warm.
     for name, scene, extra in SCENES[:2]:
-        for label, flags in (CONFIGS[0], CONFIGS[-1]):
+        for label, flags in BUILD_CONFIGS:
             pocl = tempfile.mkdtemp(prefix="pocl-")
             cold_cache = tempfile.mkdtemp(prefix="wavefront-cold-")
             small = ["--width", "16", "--spp", "1"] + extra + flags
@@ -217,7 +225,7 @@ def main():
     md.append("|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|")
     for r in out["scenes"]:
         md.append(f"| {r['scene']} | {r['triangles']} | {r['config']} | {r['msamples_per_s']:.3f} | "
-                  f"{r['closest_mrays_per_s_kernel']:.2f} | {r['shadow_mrays_per_s_kernel']:.2f} | "
+                  f"{r['closest_mrays_per_s_kernel']:.2f} | {rate(r['shadow_mrays_per_s_kernel'])} | "
                   f"{100 * r['host_share']:.1f}% | {100 * r['occupancy']:.0f}% | {r['iterations']} | "
                   f"{r['bytes_per_path']} | {r['traversal_bytes_per_triangle']:.1f} |")
     md.append("\n## Stage times (s), wavefront refill\n")
@@ -228,17 +236,19 @@ def main():
             md.append(f"| {r['scene']} | " + " | ".join(f"{r['stage_seconds'].get(n, 0.0):.3f}"
                                                       for n in stage_names) + " |")
     md.append("\n![queues](throughput-queues.png)\n")
-    md.append(f"## Pool size, Cornell box {args.sweep_size}x{args.sweep_size}, 2 spp\n")
+    md.append(f"## Pool size, Cornell box {args.sweep_size}x{args.sweep_size}, 2 spp, "
+              f"{out['pool_sweep'][0]['schedule']} (the device's default)\n")
     md.append("| pool | M samples/s | host share | occupancy | device MiB |\n|--:|--:|--:|--:|--:|")
     for r in out["pool_sweep"]:
         md.append(f"| {r['pool']} | {r['msamples_per_s']:.3f} | {100 * r['host_share']:.1f}% | "
                   f"{100 * r['occupancy']:.0f}% | {r['device_bytes'] / 2**20:.0f} |")
     md.append("\n![pool](throughput-pool.png)\n")
-    md.append(f"## Local size, Cornell box {args.size} wide, {args.spp} spp\n")
+    md.append(f"## Local size, Cornell box {args.size} wide, {args.spp} spp, "
+              f"{out['local_sweep'][0]['schedule']} (the device's default)\n")
     md.append("| local size | M samples/s | closest Mrays/s (kernel) | shadow Mrays/s (kernel) |\n|--:|--:|--:|--:|")
     for r in out["local_sweep"]:
         md.append(f"| {r['local_size']} | {r['msamples_per_s']:.3f} | {r['closest_mrays_per_s_kernel']:.2f} | "
-                  f"{r['shadow_mrays_per_s_kernel']:.2f} |")
+                  f"{rate(r['shadow_mrays_per_s_kernel'])} |")
     md.append(f"\n## Queue-push strategy, Cornell box {args.size} wide, {args.spp} spp, refill schedule\n")
     pushing = ("shade", "intersect_shadow", "roulette", "accumulate", "generate")  # the stages that push
     md.append("| strategy | M samples/s | " + " | ".join(f"{k} (s)" for k in pushing) + " |\n|---|--:|" +
@@ -247,14 +257,16 @@ def main():
         st = r["stage_seconds"]
         md.append(f"| {r['queue_push']} | {r['msamples_per_s']:.3f} | " +
                   " | ".join(f"{st.get(k, 0):.3f}" for k in pushing) + " |")
-    md.append(f"\n## Triangle count, generated scenes, {args.size} wide, {args.spp} spp\n")
+    md.append(f"\n## Triangle count, generated scenes, {args.size} wide, {args.spp} spp, "
+              f"{out['triangle_scaling'][0]['schedule']} (the device's default)\n")
     md.append("| triangles | load (s) | BVH build (s) | render (s) | M samples/s | closest Mrays/s (kernel) | "
               "shadow Mrays/s (kernel) | BVH+triangles bytes/triangle |\n|--:|--:|--:|--:|--:|--:|--:|--:|")
     for r in out["triangle_scaling"]:
         md.append(f"| {r['triangles']} | {r['load']:.2f} | {r['bvh_build']:.2f} | {r['render_seconds']:.2f} | "
                   f"{r['msamples_per_s']:.3f} | {r['closest_mrays_per_s_kernel']:.2f} | "
-                  f"{r['shadow_mrays_per_s_kernel']:.2f} | {r['traversal_bytes_per_triangle']:.1f} |")
-    md.append(f"\n## Resolution, Cornell box, {args.spp} spp\n")
+                  f"{rate(r['shadow_mrays_per_s_kernel'])} | {r['traversal_bytes_per_triangle']:.1f} |")
+    md.append(f"\n## Resolution, Cornell box, {args.spp} spp, "
+              f"{out['resolution_scaling'][0]['schedule']} (the device's default)\n")
     md.append("| image | render (s) | M samples/s | host share |\n|---|--:|--:|--:|")
     for r in out["resolution_scaling"]:
         md.append(f"| {r['width']}x{r['height']} | {r['render_seconds']:.2f} | {r['msamples_per_s']:.3f} | "

@@ -123,8 +123,8 @@ struct RenderStats {
 uint32_t default_pool_size(const std::string& device_type, unsigned compute_units, Integrator integrator);
 
 // The schedule a wavefront render runs when none is asked for: on a CPU,
-// group, whose stages keep a work-group's paths in one core's caches (1.2-1.5x
-// refill, bench/results/cpu-wavefront.md); elsewhere, and to sort by material
+// group, whose stages keep a work-group's paths in one core's caches (the
+// fastest there, docs/scheduling.md); elsewhere, and to sort by material
 // (which needs the global queue), refill.
 Schedule default_schedule(const std::string& device_type, bool sort_materials);
 

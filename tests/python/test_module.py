@@ -81,7 +81,7 @@ def test_statistics_agree_with_one_another(cache):
     assert "samples " in result.report
 
 
-def test_a_group_launch_counts_its_samples_against_what_each_slot_may_start(cache):
+def test_group_occupancy_counts_busy_slots_not_samples(cache):
     # One slot a pixel, and launches of 1, 1 and 2 samples a slot (the rounds
     # of 1, 2 and 4 spp): every slot busy in each, the pool full, however
     # many samples its slots start.
