@@ -1,6 +1,7 @@
 // embree_tracer.cpp — Embree's defaults except the build quality: high, like
 // the full binned-SAH build of our own BVH, so traversal is compared with
-// traversal and not with a quicker build.
+// traversal and not with a quicker build; and, for the robust reference, the
+// robust scene flag on every scene, instanced meshes' too.
 #include "embree_tracer.h"
 
 #include <chrono>
@@ -49,11 +50,16 @@ RTCGeometry triangles(RTCDevice device, const Scene& scene, size_t first, size_t
 
 } // namespace
 
-EmbreeScene::EmbreeScene(const Scene& scene, unsigned threads) : threads_(threads) {
+EmbreeScene::EmbreeScene(const Scene& scene, unsigned threads, EmbreeMode mode) : threads_(threads) {
     device_ = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
     if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed");
-    scene_ = rtcNewScene(device_);
-    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    const auto new_scene = [&] {
+        RTCScene s = rtcNewScene(device_);
+        rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
+        if (mode == EmbreeMode::Robust) rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+        return s;
+    };
+    scene_ = new_scene();
     const auto start = std::chrono::steady_clock::now();
     if (const size_t world = scene.world_triangle_count(); world > 0) {
         RTCGeometry geometry = triangles(device_, scene, 0, world);
@@ -64,8 +70,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, unsigned threads) : threads_(thread
     }
     std::vector<RTCScene> meshes;
     for (const SharedMesh& mesh : scene.shared_meshes) {
-        meshes.push_back(rtcNewScene(device_));
-        rtcSetSceneBuildQuality(meshes.back(), RTC_BUILD_QUALITY_HIGH);
+        meshes.push_back(new_scene());
         RTCGeometry geometry = triangles(device_, scene, mesh.first, mesh.count);
         rtcAttachGeometry(meshes.back(), geometry);
         rtcReleaseGeometry(geometry);

@@ -3,7 +3,9 @@
 // instances (a scene each, placed by RTC_GEOMETRY_TYPE_INSTANCE), traced one
 // ray per call (rtcIntersect1, rtcOccluded1) or in packets of 8
 // (rtcIntersect8) on a given number of std::threads, each taking one static
-// chunk of the rays.
+// chunk of the rays. Built either as Embree is by default, or robust
+// (RTC_SCENE_FLAG_ROBUST), the mode that promises what ours does: no ray
+// through the edge shared by two triangles slips between them.
 #pragma once
 
 #include <cmath>
@@ -32,11 +34,18 @@ struct EmbreeOcclusion {
     double seconds = 0.0;
 };
 
+// Fast: Embree's default, Möller–Trumbore's test on precomputed edges
+// (Triangle4) in a tree with spatial splits (RTC_BUILD_QUALITY_HIGH). Robust:
+// Embree's watertight Plücker test on the corners (Triangle4v) with
+// conservative box tests, in a tree without spatial splits, since Embree 3
+// builds robust scenes with its plain binned SAH whatever the quality asked.
+enum class EmbreeMode { Fast, Robust };
+
 class EmbreeScene {
 public:
     // The scene's world-space triangles in one geometry (primID = triangle),
     // and each instance of a shared mesh an instance of that mesh's scene.
-    EmbreeScene(const Scene& scene, unsigned threads);
+    EmbreeScene(const Scene& scene, unsigned threads, EmbreeMode mode = EmbreeMode::Fast);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
