@@ -52,6 +52,7 @@
 #include "render/renderer.h"
 #include "device/scene_features.h"
 #include "surface_rays.h"
+#include "traversal_work.h"
 #include "tree_cost.h"
 
 namespace wf::bench {
@@ -128,6 +129,7 @@ struct Row {
     double robust_seconds = 0.0;          // Embree's robust scene, one ray per call
     std::optional<double> packet_seconds; // rtcIntersect8, for the camera rays
     Agreement agreement, packet_agreement;
+    TraversalWork work; // one ray at a time, as bounce and shadow rays go (camera rays go in packets)
 };
 
 double mrays(size_t rays, double seconds) { return rays / seconds * 1e-6; }
@@ -140,10 +142,12 @@ ImageSize image_of_about(uint32_t rays, const std::optional<SceneCamera>& camera
 }
 
 Row closest_row(const std::string& set, const RayBatch& batch, const std::vector<BatchRay>& rays,
-                const EmbreeScene& embree, const EmbreeScene& robust, const Bvh& bvh, bool packets) {
+                const EmbreeScene& embree, const EmbreeScene& robust, const SceneBuild& build, bool packets) {
+    const Bvh& bvh = build.bvh;
     Row row;
     row.set = set;
     row.rays = rays.size();
+    row.work = traversal_work(build.data, rays, false);
     const ClosestHits ours = best_of_three([&] { return batch.closest_hits(); }, &ClosestHits::kernel_seconds);
     const EmbreeHits theirs = best_of_three([&] { return embree.intersect1(rays); }, &EmbreeHits::seconds);
     row.ours_seconds = ours.kernel_seconds;
@@ -159,10 +163,12 @@ Row closest_row(const std::string& set, const RayBatch& batch, const std::vector
 }
 
 Row any_row(const std::string& set, const RayBatch& batch, const std::vector<BatchRay>& rays,
-            const EmbreeScene& embree, const EmbreeScene& robust, const std::vector<glm::vec3>& positions) {
+            const EmbreeScene& embree, const EmbreeScene& robust, const SceneBuild& build,
+            const std::vector<glm::vec3>& positions) {
     Row row;
     row.set = set;
     row.rays = rays.size();
+    row.work = traversal_work(build.data, rays, true);
     const AnyHits ours = best_of_three([&] { return batch.any_hits(); }, &AnyHits::kernel_seconds);
     const EmbreeOcclusion theirs = best_of_three([&] { return embree.occluded1(rays); }, &EmbreeOcclusion::seconds);
     row.ours_seconds = ours.kernel_seconds;
@@ -224,6 +230,11 @@ void print_table(std::ostream& out, const Report& r) {
             << packet.str() << std::setprecision(3) << std::setw(11) << 100.0 * row.agreement.fraction() << "%"
             << std::setprecision(2) << std::setw(10) << robust << std::setw(14) << ours / robust << "\n";
     }
+    out << "work     a ray, nodes + blocks, traced one at a time:" << std::setprecision(2);
+    for (const Row& row : r.rows)
+        out << (&row == &r.rows.front() ? " " : ", ") << row.set << " " << row.work.node_visits << " + "
+            << row.work.block_tests;
+    out << "\n";
     for (const Row& row : r.rows) {
         const Agreement& a = row.agreement;
         if (a.agree != a.rays)
@@ -248,7 +259,9 @@ void write_json(const std::string& path, const Report& r) {
         out << (i ? "," : "") << "\n    {\"set\": " << json_string(row.set) << ", \"rays\": " << row.rays
             << ", \"ours_mrays_per_s\": " << ours << ", \"embree_mrays_per_s\": " << embree
             << ", \"ours_over_embree\": " << ours / embree << ", \"agreement\": " << row.agreement.fraction()
-            << ", \"embree_robust_mrays_per_s\": " << mrays(row.rays, row.robust_seconds);
+            << ", \"embree_robust_mrays_per_s\": " << mrays(row.rays, row.robust_seconds)
+            << ", \"node_visits_per_ray\": " << row.work.node_visits
+            << ", \"block_tests_per_ray\": " << row.work.block_tests;
         if (row.packet_seconds)
             out << ", \"embree_packet8_mrays_per_s\": " << mrays(row.rays, *row.packet_seconds)
                 << ", \"packet8_agreement\": " << row.packet_agreement.fraction();
@@ -296,17 +309,18 @@ int run(const Options& options) {
     {
         const RayBatch batch(device, program.program, uploaded,
                              make_device_camera(camera, image_of_about(options.rays, scene.camera)), 0);
-        report.rows.push_back(closest_row("camera", batch, batch.rays(), embree, robust, bvh, true));
+        report.rows.push_back(closest_row("camera", batch, batch.rays(), embree, robust, build, true));
     }
     {
         const std::vector<BatchRay> rays = bounce_rays(placed, options.rays, 1);
         report.rows.push_back(closest_row("bounce", RayBatch(device, program.program, uploaded, rays), rays, embree,
-                                          robust, bvh, false));
+                                          robust, build, false));
     }
     {
         const std::vector<BatchRay> rays = shadow_segments(placed, options.rays, 2);
         report.rows.push_back(
-            any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree, robust, placed.positions));
+            any_row("shadow", RayBatch(device, program.program, uploaded, rays), rays, embree, robust, build,
+                    placed.positions));
     }
 
     print_table(std::cout, report);
