@@ -5,6 +5,7 @@
 #include "embree_tracer.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -51,6 +52,10 @@ RTCGeometry triangles(RTCDevice device, const Scene& scene, size_t first, size_t
 } // namespace
 
 EmbreeScene::EmbreeScene(const Scene& scene, unsigned threads, EmbreeMode mode) : threads_(threads) {
+    if (mode == EmbreeMode::Robust) { // the open interval (embree_tracer.h)
+        t_near_ = std::numeric_limits<float>::min();
+        segment_end_ = std::nextafter(1.0f, 0.0f);
+    }
     device_ = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
     if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed");
     const auto new_scene = [&] {
@@ -120,7 +125,7 @@ EmbreeHits EmbreeScene::intersect1(const std::vector<BatchRay>& rays, float t_fa
             RTCRayHit h{};
             h.ray.org_x = r.origin.x, h.ray.org_y = r.origin.y, h.ray.org_z = r.origin.z;
             h.ray.dir_x = r.direction.x, h.ray.dir_y = r.direction.y, h.ray.dir_z = r.direction.z;
-            h.ray.tnear = 0.0f;
+            h.ray.tnear = t_near_;
             h.ray.tfar = t_far;
             h.ray.mask = ~0u;
             h.hit.geomID = h.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -155,7 +160,7 @@ EmbreeHits EmbreeScene::intersect8(const std::vector<BatchRay>& rays) const {
                 const BatchRay& r = rays[i];
                 h.ray.org_x[k] = r.origin.x, h.ray.org_y[k] = r.origin.y, h.ray.org_z[k] = r.origin.z;
                 h.ray.dir_x[k] = r.direction.x, h.ray.dir_y[k] = r.direction.y, h.ray.dir_z[k] = r.direction.z;
-                h.ray.tnear[k] = 0.0f;
+                h.ray.tnear[k] = t_near_;
                 h.ray.tfar[k] = kInfinity;
                 h.ray.mask[k] = ~0u;
                 h.hit.geomID[k] = h.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
@@ -186,8 +191,8 @@ EmbreeOcclusion EmbreeScene::occluded1(const std::vector<BatchRay>& rays) const 
             RTCRay ray{};
             ray.org_x = r.origin.x, ray.org_y = r.origin.y, ray.org_z = r.origin.z;
             ray.dir_x = r.direction.x, ray.dir_y = r.direction.y, ray.dir_z = r.direction.z;
-            ray.tnear = 0.0f;
-            ray.tfar = 1.0f;
+            ray.tnear = t_near_;
+            ray.tfar = segment_end_;
             ray.mask = ~0u;
             rtcOccluded1(scene_, &context, &ray);
             out.occluded[i] = ray.tfar == -kInfinity; // Embree's mark of a blocked ray

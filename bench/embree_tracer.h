@@ -3,9 +3,9 @@
 // instances (a scene each, placed by RTC_GEOMETRY_TYPE_INSTANCE), traced one
 // ray per call (rtcIntersect1, rtcOccluded1) or in packets of 8
 // (rtcIntersect8) on a given number of std::threads, each taking one static
-// chunk of the rays. Built either as Embree is by default, or robust
-// (RTC_SCENE_FLAG_ROBUST), the mode that promises what ours does: no ray
-// through the edge shared by two triangles slips between them.
+// chunk of the rays. Built either as Embree is by default, or in its robust
+// mode (RTC_SCENE_FLAG_ROBUST), whose test, like ours, is meant to let no ray
+// through the edge two triangles share.
 #pragma once
 
 #include <cmath>
@@ -36,9 +36,14 @@ struct EmbreeOcclusion {
 
 // Fast: Embree's default, Möller–Trumbore's test on precomputed edges
 // (Triangle4) in a tree with spatial splits (RTC_BUILD_QUALITY_HIGH). Robust:
-// Embree's watertight Plücker test on the corners (Triangle4v) with
-// conservative box tests, in a tree without spatial splits, since Embree 3
-// builds robust scenes with its plain binned SAH whatever the quality asked.
+// Embree's Plücker test on the corners (Triangle4v), watertight along shared
+// edges, with conservative box tests in the meshes' trees (not in the tree of
+// instances), in a tree without spatial splits: Embree 3 builds robust scenes
+// with its plain binned SAH whatever the quality asked. Unlike ours, neither
+// bounds the error of t. Robust queries ask for the open interval: the test
+// reports a bounce ray's own surface at t = 0 and a segment's far surface at
+// t = 1 (a third of the Cornell box's bounce rays, with tnear = 0), so they
+// start at the least normal float and a segment ends at the float below 1.
 enum class EmbreeMode { Fast, Robust };
 
 class EmbreeScene {
@@ -50,11 +55,12 @@ public:
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-    // Closest hits, t in [0, t_far].
+    // Closest hits, t in [0, t_far] (robust: from the least normal float).
     EmbreeHits intersect1(const std::vector<BatchRay>& rays, float t_far = INFINITY) const;
     // The same, eight consecutive rays per call.
     EmbreeHits intersect8(const std::vector<BatchRay>& rays) const;
-    // Any hit along each ray's direction taken as the whole segment, t in [0, 1].
+    // Any hit along each ray's direction taken as the whole segment, t in [0, 1]
+    // (robust: the open interval, as above).
     EmbreeOcclusion occluded1(const std::vector<BatchRay>& rays) const;
 
     // Wall time of the scene's build (rtcCommitScene) on the threads given.
@@ -68,6 +74,8 @@ private:
     unsigned threads_;
     std::vector<uint32_t> first_; // by top-scene geometry: the scene triangle of its primID 0
     std::vector<uint32_t> placed_first_; // the same in flattened(scene)
+    float t_near_ = 0.0f;       // where every query starts
+    float segment_end_ = 1.0f;  // where a shadow segment ends (its direction is the whole segment)
     double build_seconds_ = 0.0;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

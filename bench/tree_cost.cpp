@@ -32,11 +32,15 @@ TreeCost tree_cost(const Bvh& bvh) {
                 c.node_visits += p;
                 continue;
             }
-            const uint32_t first = child & WF_BVH_FIRST_MASK;
-            const uint32_t last = first + ((child & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT);
-            c.block_tests += p * (last / WF_BLOCK_LANES - first / WF_BLOCK_LANES + 1);
+            c.block_tests += p * leaf_blocks(child).count();
         }
     return c;
+}
+
+LeafBlocks leaf_blocks(uint32_t leaf) {
+    const uint32_t first = leaf & WF_BVH_FIRST_MASK;
+    const uint32_t last = first + ((leaf & ~WF_BVH_LEAF) >> WF_BVH_COUNT_SHIFT);
+    return LeafBlocks{first / WF_BLOCK_LANES, last / WF_BLOCK_LANES};
 }
 
 } // namespace wf::bench

@@ -18,4 +18,12 @@ struct TreeCost {
 
 TreeCost tree_cost(const Bvh& bvh);
 
+// The blocks of four triangles a leaf's child word spans, the ones its test
+// loads: first to last, inclusive.
+struct LeafBlocks {
+    uint32_t first = 0, last = 0;
+    uint32_t count() const { return last - first + 1; }
+};
+LeafBlocks leaf_blocks(uint32_t leaf);
+
 } // namespace wf::bench
