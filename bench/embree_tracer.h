@@ -55,11 +55,11 @@ public:
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-    // Closest hits, t in [0, t_far] (robust: from the least normal float).
+    // Closest hits, t in (0, t_far] (robust: from the least normal float).
     EmbreeHits intersect1(const std::vector<BatchRay>& rays, float t_far = INFINITY) const;
     // The same, eight consecutive rays per call.
     EmbreeHits intersect8(const std::vector<BatchRay>& rays) const;
-    // Any hit along each ray's direction taken as the whole segment, t in [0, 1]
+    // Any hit along each ray's direction taken as the whole segment, t in (0, 1]
     // (robust: the open interval, as above).
     EmbreeOcclusion occluded1(const std::vector<BatchRay>& rays) const;
 

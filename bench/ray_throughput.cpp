@@ -13,18 +13,18 @@
 // (incoherent), and shadow segments between two such points (any hit). Our
 // times are the kernels' own, from profiling events; Embree's the wall time of
 // T threads. Embree runs twice: as it is by default, the targets' reference,
-// and in its robust mode (embree_tracer.h), whose test, like ours, leaves no
-// crack between triangles that share an edge, so that what robustness costs is
-// seen apart from what the code costs. Each time is the best of three runs
-// after one warm-up, which for the kernels is where PoCL compiles them for the
-// launch. PoCL is held to T
-// threads too (POCL_MAX_PTHREAD_COUNT), each pinned to a core
-// (POCL_AFFINITY), unless the environment already says: unpinned, the
-// scheduler moved them between launches this short (tens of milliseconds),
-// and the same kernels read from 16 to 20 M rays/s from run to run where
-// Embree's threads held steady (bench/results/ray-throughput.md). Beside the
-// times, the node visits and block tests a ray of each set, counted by a CPU's
-// traversal on the host (traversal_work.h) over up to 200 000 of the set's rays.
+// and in its robust mode (embree_tracer.h), whose test, like ours, is meant to
+// leave no crack between triangles that share an edge, so that what robustness
+// costs is seen apart from what the code costs. Each time is the best of three
+// runs after one warm-up, which for the kernels is where PoCL compiles them
+// for the launch. PoCL is held to T threads too (POCL_MAX_PTHREAD_COUNT), each
+// pinned to a core (POCL_AFFINITY), unless the environment already says:
+// unpinned, the scheduler moved them between launches this short (tens of
+// milliseconds), and the same kernels read from 16 to 20 M rays/s from run to
+// run where Embree's threads held steady (bench/results/ray-throughput.md).
+// Beside the times, the node visits and block tests a ray of each set, counted
+// by a CPU's traversal on the host (traversal_work.h) over up to 200 000 of
+// the set's rays.
 //
 // Exit codes as for `wavefront`: 0, 1 (the machine failed, or the tracers
 // disagree on more than 0.1% of some set's rays, not counting the shadow
