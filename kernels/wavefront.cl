@@ -210,6 +210,9 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
      * in the last pass wait in the group's (else unused) regenerate queue
      * until it ends, and then join the queue's tail together. */
     __local uint cameras;
+    /* The group's tallies, kept by work-item 0 in local memory: PoCL keeps a
+     * private variable that the loop below carries across its barriers as an
+     * array of the group's copies, loaded and stored at every pass. */
     __local uint nonfinite;
 #ifdef WF_GROUP_LANES
     __local uint lane_paths, lane_slots;
@@ -230,7 +233,6 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         samples_started[lid] = 1u;
         local_push(&queue[WF_QUEUE_EXTEND], own);
     }
-    /* by the entries this work-item took: */
     /* Work-item 0 counts the paths that entered each queue, for the study of
      * the schedule; added to the global queues' counters, which this
      * schedule leaves unused, at the end (CounterSnapshot says so); those
@@ -357,6 +359,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
     group_atomic_add(&counters[WF_QUEUE_REGENERATE], samples_started[lid], scratch);
     if (lid == 0) {
+        /* every path that entered extend was traced and shaded, every one
+         * that entered shadow traced */
         atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], entered[WF_QUEUE_EXTEND]);
         atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], entered[WF_QUEUE_SHADOW]);
         if (nonfinite) atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite);
@@ -364,9 +368,8 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         atomic_add(&counters[WF_COUNTER_LANE_PATHS], lane_paths);
         atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots);
 #endif
-    }
-    if (lid == 0)
         for (uint q = 0u; q < WF_QUEUE_COUNT; ++q)
             if (entered[q]) atomic_add(&counters[q], entered[q]);
+    }
 }
 #endif
