@@ -210,9 +210,11 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
      * in the last pass wait in the group's (else unused) regenerate queue
      * until it ends, and then join the queue's tail together. */
     __local uint cameras;
-    /* The group's tallies, kept by work-item 0 in local memory: PoCL keeps a
-     * private variable that the loop below carries across its barriers as an
-     * array of the group's copies, loaded and stored at every pass. */
+    /* The group's tallies, in local memory rather than in each work-item's
+     * variables: PoCL keeps a private variable that the loop below carries
+     * across its barriers as an array of the group's copies, copied at every
+     * pass. Work-item 0 counts the lanes; each work-item that finds a
+     * non-finite sample adds it with a local atomic. */
     __local uint nonfinite;
 #ifdef WF_GROUP_LANES
     __local uint lane_paths, lane_slots;
@@ -236,7 +238,11 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
     /* Work-item 0 counts the paths that entered each queue, for the study of
      * the schedule; added to the global queues' counters, which this
      * schedule leaves unused, at the end (CounterSnapshot says so); those
-     * that entered generate, the camera samples started, from samples_started. */
+     * that entered generate, the camera samples started, from samples_started.
+     * The extension and shadow queues' entries are also the rays traced. The
+     * array stays private: in local memory (an array, or a field of each local
+     * queue) it made PoCL 3.1's build of this kernel crash in intersect_paths
+     * on a slot far past the pool (bench/results/cpu-wavefront.md, stop 56). */
     uint entered[WF_QUEUE_COUNT];
     for (uint q = 0u; q < WF_QUEUE_COUNT; ++q) entered[q] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
