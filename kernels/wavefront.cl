@@ -210,24 +210,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
      * in the last pass wait in the group's (else unused) regenerate queue
      * until it ends, and then join the queue's tail together. */
     __local uint cameras;
-    /* The group's tallies, in local memory rather than in each work-item's
-     * variables: PoCL keeps a private variable that the loop below carries
-     * across its barriers as an array of the group's copies, copied at every
-     * pass. Work-item 0 counts the lanes; each work-item that finds a
-     * non-finite sample adds it with a local atomic. */
-    __local uint nonfinite;
-#ifdef WF_GROUP_LANES
-    __local uint lane_paths, lane_slots;
-#endif
     const uint lid = get_local_id(0), first_slot = get_group_id(0) * get_local_size(0);
     samples_started[lid] = 0u;
     if (lid < WF_QUEUE_COUNT) queue[lid].length = 0u;
-    if (lid == 0) {
-        cameras = nonfinite = 0u;
-#ifdef WF_GROUP_LANES
-        lane_paths = lane_slots = 0u;
-#endif
-    }
+    if (lid == 0) cameras = 0u;
     if (lid < WF_PATH_LENGTH_BUCKETS) histogram[lid] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     const uint own = get_global_id(0);
@@ -235,14 +221,12 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         samples_started[lid] = 1u;
         local_push(&queue[WF_QUEUE_EXTEND], own);
     }
+    /* by the entries this work-item took: */
+    uint closest_rays = 0u, shadow_rays = 0u, nonfinite = 0u, lane_paths = 0u, lane_slots = 0u;
     /* Work-item 0 counts the paths that entered each queue, for the study of
      * the schedule; added to the global queues' counters, which this
      * schedule leaves unused, at the end (CounterSnapshot says so); those
-     * that entered generate, the camera samples started, from samples_started.
-     * The extension and shadow queues' entries are also the rays traced. The
-     * array stays private: in local memory (an array, or a field of each local
-     * queue) it made PoCL 3.1's build of this kernel crash in intersect_paths
-     * on a slot far past the pool (bench/results/cpu-wavefront.md, stop 56). */
+     * that entered generate, the camera samples started, from samples_started. */
     uint entered[WF_QUEUE_COUNT];
     for (uint q = 0u; q < WF_QUEUE_COUNT; ++q) entered[q] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -294,11 +278,10 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
 #endif
         }
         barrier(CLK_LOCAL_MEM_FENCE);
-        if (lid * WF_LANE_WIDTH < lanes_length)
+        if (lid * WF_LANE_WIDTH < lanes_length) {
             shade_lanes_run(lanes, lid * WF_LANE_WIDTH, lanes_length, &params, &scene);
-        if (lid == 0) {
-            lane_paths += lanes_length;
-            lane_slots += (lanes_length + WF_LANE_WIDTH - 1u) / WF_LANE_WIDTH * WF_LANE_WIDTH;
+            lane_paths += min((uint)WF_LANE_WIDTH, lanes_length - lid * WF_LANE_WIDTH);
+            lane_slots += WF_LANE_WIDTH;
         }
         barrier(CLK_LOCAL_MEM_FENCE);
 #endif
@@ -315,6 +298,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
 #else
             const uint next = shade_path(&path, &params, slot, &scene, &film);
 #endif
+            ++closest_rays;
             local_push(&queue[next], slot);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
@@ -327,6 +311,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
             uint slot[WF_TRACE_WIDTH], next[WF_TRACE_WIDTH];
             const uint count = local_slots_to_trace(&queue[WF_QUEUE_SHADOW], lid, slot);
             if (count > 0u) trace_shadow_rays(&path, &params, slot, count, &scene, &film, next);
+            shadow_rays += count;
             for (uint i = 0u; i < count; ++i) local_push(&queue[next[i]], slot[i]);
         }
         barrier(CLK_LOCAL_MEM_FENCE);
@@ -337,7 +322,7 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         barrier(CLK_LOCAL_MEM_FENCE);
         if (lid < queue[WF_QUEUE_FINISHED].length) {
             const uint slot = queue[WF_QUEUE_FINISHED].slots[lid];
-            if (accumulate_path(&path, &params, slot, &film)) atomic_inc(&nonfinite);
+            nonfinite += accumulate_path(&path, &params, slot, &film) ? 1u : 0u;
             atomic_inc(&histogram[path_length_bucket(path_depth(&path, slot))]);
             /* The slot's next sample, while it has one this launch. */
             if (samples_started[slot - first_slot] < WF_GROUP_SAMPLES &&
@@ -360,22 +345,17 @@ __kernel void group_wavefront(WF_STAGE_PARAMS) {
         }
         barrier(CLK_LOCAL_MEM_FENCE);
     }
+    group_atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], closest_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], shadow_rays, scratch);
+    group_atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite, scratch);
+    group_atomic_add(&counters[WF_COUNTER_LANE_PATHS], lane_paths, scratch);
+    group_atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots, scratch);
     group_atomic_add(&counters[WF_COUNTER_BUSY_SLOTS], samples_started[lid] != 0u ? 1u : 0u, scratch);
     if (lid < WF_PATH_LENGTH_BUCKETS && histogram[lid])
         atomic_add(&counters[WF_COUNTER_PATH_LENGTHS + lid], histogram[lid]);
     group_atomic_add(&counters[WF_QUEUE_REGENERATE], samples_started[lid], scratch);
-    if (lid == 0) {
-        /* every path that entered extend was traced and shaded, every one
-         * that entered shadow traced */
-        atomic_add(&counters[WF_COUNTER_CLOSEST_RAYS], entered[WF_QUEUE_EXTEND]);
-        atomic_add(&counters[WF_COUNTER_SHADOW_RAYS], entered[WF_QUEUE_SHADOW]);
-        if (nonfinite) atomic_add(&counters[WF_COUNTER_NONFINITE], nonfinite);
-#ifdef WF_GROUP_LANES
-        atomic_add(&counters[WF_COUNTER_LANE_PATHS], lane_paths);
-        atomic_add(&counters[WF_COUNTER_LANE_SLOTS], lane_slots);
-#endif
+    if (lid == 0)
         for (uint q = 0u; q < WF_QUEUE_COUNT; ++q)
             if (entered[q]) atomic_add(&counters[q], entered[q]);
-    }
 }
 #endif
